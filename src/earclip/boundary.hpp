@@ -1,0 +1,58 @@
+// The boundary as the ear clipper sees it: a cyclic doubly linked list of nodes. A node is one
+// occurrence of a vertex on the boundary; bridges and splits make several nodes of one vertex.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "pear/geometry.hpp"
+#include "pear/predicates.hpp"
+
+namespace pear::detail {
+
+struct Boundary {
+  std::vector<Point> pos;             ///< position of each node (copied for locality)
+  std::vector<std::uint32_t> vertex;  ///< the caller's index of the node's vertex
+  std::vector<std::uint32_t> prev, next;
+
+  std::uint32_t size() const { return static_cast<std::uint32_t>(pos.size()); }
+  void clear() {
+    pos.clear();
+    vertex.clear();
+    prev.clear();
+    next.clear();
+  }
+  std::uint32_t add(Point p, std::uint32_t caller_index) {
+    pos.push_back(p);
+    vertex.push_back(caller_index);
+    prev.push_back(0);
+    next.push_back(0);
+    return size() - 1;
+  }
+  /// A new node at the same vertex as `node`, not yet linked.
+  std::uint32_t copy(std::uint32_t node) { return add(pos[node], vertex[node]); }
+  void link(std::uint32_t a, std::uint32_t b) {
+    next[a] = b;
+    prev[b] = a;
+  }
+  void unlink(std::uint32_t node) { link(prev[node], next[node]); }
+
+  /// Turn at `node`: > 0 convex, < 0 reflex, 0 collinear (exact).
+  double turn(std::uint32_t node) const {
+    return orient2d(pos[prev[node]], pos[node], pos[next[node]]);
+  }
+
+  /// Whether point x lies strictly inside the interior sector of `node` (interior on the left of
+  /// the boundary edges). Exact.
+  bool sector_contains(std::uint32_t node, const Point& x) const {
+    const Point& p = pos[prev[node]];
+    const Point& v = pos[node];
+    const Point& n = pos[next[node]];
+    const bool left_of_in = orient2d(p, v, x) > 0;
+    const bool left_of_out = orient2d(v, n, x) > 0;
+    if (orient2d(p, v, n) > 0) return left_of_in && left_of_out;
+    return left_of_in || left_of_out;
+  }
+};
+
+}  // namespace pear::detail

@@ -1,0 +1,220 @@
+#include "ear_clipper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace pear::detail {
+namespace {
+
+bool heap_less(const auto& a, const auto& b) {
+  return a.quality < b.quality || (a.quality == b.quality && a.node > b.node);
+}
+
+Point min_corner(const Point& a, const Point& b, const Point& c) {
+  return {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
+}
+Point max_corner(const Point& a, const Point& b, const Point& c) {
+  return {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y})};
+}
+
+}  // namespace
+
+void EarClipper::classify(std::uint32_t entry) {
+  Boundary& b = *b_;
+  reflex_.assign(b.size(), 0);
+  alive_.assign(b.size(), 0);
+  stamp_.assign(b.size(), 0);
+  scratch_.clear();
+  remaining_ = 0;
+  std::uint32_t v = entry;
+  do {
+    alive_[v] = 1;
+    ++remaining_;
+    if (!(b.turn(v) > 0)) {
+      reflex_[v] = 1;
+      scratch_.push_back(v);
+    }
+    v = b.next[v];
+  } while (v != entry);
+  grid_.build(b, scratch_);
+}
+
+/// Whether reflex node q spoils the ear (p, v, n). Strictly inside always does; on the
+/// triangle's boundary it does when its edges reach into the triangle (paper Fig. 1(b), and
+/// FIST's handling of the coincident nodes that bridges and touching rings create).
+bool EarClipper::blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const {
+  const Boundary& b = *b_;
+  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n], &x = b.pos[q];
+  const double o1 = orient2d(a, t, x);
+  if (o1 < 0) return false;
+  const double o2 = orient2d(t, c, x);
+  if (o2 < 0) return false;
+  const double o3 = orient2d(c, a, x);
+  if (o3 < 0) return false;
+  if (o1 > 0 && o2 > 0 && o3 > 0) return true;
+  if (x == a) return coincident_blocks(q, t, c, &c, q);
+  if (x == c) return coincident_blocks(q, a, t, &a, q);
+  if (x == t) return coincident_blocks(q, c, a, nullptr, q);
+  if (o3 == 0) return true;  // on the open diagonal
+  const Point &qp = b.pos[b.prev[q]], &qn = b.pos[b.next[q]];
+  if (o1 == 0) return orient2d(a, t, qp) > 0 || orient2d(a, t, qn) > 0;
+  return orient2d(t, c, qp) > 0 || orient2d(t, c, qn) > 0;
+}
+
+/// q sits exactly on a corner of the ear; the corner's wedge is bounded by the rays towards
+/// wedge_a and wedge_b. q spoils the ear if one of its edges runs into the wedge, or (at a
+/// diagonal end) if the diagonal runs into q's own sector.
+bool EarClipper::coincident_blocks(std::uint32_t, const Point& wedge_a, const Point& wedge_b,
+                                   const Point* diagonal_end, std::uint32_t q) const {
+  const Boundary& b = *b_;
+  const Point& corner = b.pos[q];
+  const auto in_wedge = [&](const Point& y) {
+    return orient2d(corner, wedge_a, y) > 0 && orient2d(wedge_b, corner, y) > 0;
+  };
+  if (in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]])) return true;
+  return diagonal_end != nullptr && b.sector_contains(q, *diagonal_end);
+}
+
+bool EarClipper::is_ear(std::uint32_t v) const {
+  const Boundary& b = *b_;
+  const std::uint32_t p = b.prev[v], n = b.next[v];
+  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
+  if (!(orient2d(a, t, c) > 0)) return false;
+  const Point lo = min_corner(a, t, c), hi = max_corner(a, t, c);
+  return !grid_.any_in_box(lo, hi, [&](std::uint32_t q) {
+    if (!reflex_[q] || q == p || q == v || q == n) return false;
+    const Point& x = b.pos[q];
+    if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
+    return blocks(p, v, n, q);
+  });
+}
+
+/// FIST's "top": ears closer to equilateral first. Twice the area over the sum of the squared
+/// sides is 1/sqrt(3) for an equilateral triangle and tends to 0 for slivers.
+double EarClipper::quality(std::uint32_t v) const {
+  const Boundary& b = *b_;
+  const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
+  const auto sq = [](const Point& u, const Point& w) {
+    const double dx = u.x - w.x, dy = u.y - w.y;
+    return dx * dx + dy * dy;
+  };
+  const double sides = sq(a, t) + sq(t, c) + sq(c, a);
+  return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
+}
+
+void EarClipper::clip(std::uint32_t v) {
+  Boundary& b = *b_;
+  out_->push_back({b.vertex[b.prev[v]], b.vertex[v], b.vertex[b.next[v]]});
+  b.unlink(v);
+  alive_[v] = 0;
+  reflex_[v] = 0;
+  --remaining_;
+}
+
+/// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
+void EarClipper::update_neighbour(std::uint32_t v) {
+  if (reflex_[v] && b_->turn(v) > 0) reflex_[v] = 0;
+  ++stamp_[v];
+}
+
+void EarClipper::offer(std::uint32_t v) {
+  if (!is_ear(v)) return;
+  heap_.push_back({quality(v), v, stamp_[v]});
+  std::push_heap(heap_.begin(), heap_.end(),
+                 [](const auto& x, const auto& y) { return heap_less(x, y); });
+}
+
+bool EarClipper::pop(std::uint32_t& v) {
+  while (!heap_.empty()) {
+    std::pop_heap(heap_.begin(), heap_.end(),
+                  [](const auto& x, const auto& y) { return heap_less(x, y); });
+    const Candidate top = heap_.back();
+    heap_.pop_back();
+    if (alive_[top.node] && stamp_[top.node] == top.stamp) {
+      v = top.node;
+      return true;
+    }
+  }
+  return false;
+}
+
+void EarClipper::clip_top() {
+  std::uint32_t last = 0;
+  for (std::uint32_t v = 0; v < b_->size(); ++v)
+    if (alive_[v]) offer(v), last = v;
+  while (remaining_ > 3) {
+    std::uint32_t v;
+    if (!pop(v)) {
+      if (!fall_back(last)) break;
+      last = touched_;
+      for (std::uint32_t u : {b_->prev[last], last, b_->next[last]}) update_neighbour(u), offer(u);
+      continue;
+    }
+    const std::uint32_t p = b_->prev[v], n = b_->next[v];
+    clip(v);
+    update_neighbour(p);
+    update_neighbour(n);
+    offer(p);
+    offer(n);
+    last = p;
+  }
+  finish(last);
+}
+
+/// Without a queue: walk the boundary, clip every ear met, and step back after a clip, since
+/// the previous node is the likeliest new ear.
+void EarClipper::clip_fast(std::uint32_t entry) {
+  std::uint32_t v = entry;
+  std::size_t misses = 0;
+  while (remaining_ > 3) {
+    if (is_ear(v)) {
+      const std::uint32_t p = b_->prev[v], n = b_->next[v];
+      clip(v);
+      update_neighbour(p);
+      update_neighbour(n);
+      v = p;
+      misses = 0;
+      continue;
+    }
+    v = b_->next[v];
+    if (++misses <= remaining_) continue;
+    if (!fall_back(v)) break;
+    v = touched_;
+    misses = 0;
+  }
+  finish(v);
+}
+
+bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
+  b_ = &b;
+  out_ = &out;
+  heuristic_ = heuristic;
+  best_effort_ = false;
+  heap_.clear();
+  classify(entry);
+  if (heuristic == EarHeuristic::top)
+    clip_top();
+  else
+    clip_fast(entry);
+  return !best_effort_;
+}
+
+EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {
+  b_ = &b;
+  classify(entry);
+  EarStatistics stats;
+  std::uint32_t v = entry;
+  do {
+    ++stats.vertices;
+    if (reflex_[v])
+      ++stats.reflex;
+    else
+      ++stats.convex;
+    if (remaining_ > 3 && is_ear(v)) ++stats.ears;
+    v = b.next[v];
+  } while (v != entry);
+  if (remaining_ == 3) stats.ears = stats.convex;
+  return stats;
+}
+
+}  // namespace pear::detail

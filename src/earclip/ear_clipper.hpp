@@ -1,0 +1,67 @@
+// Ear classification and clipping (paper §1.1-1.2), with FIST's fallbacks for input that is not
+// simple. Works on one cycle of a Boundary.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "boundary.hpp"
+#include "pear/pear.hpp"
+#include "reflex_grid.hpp"
+
+namespace pear::detail {
+
+using TriangleList = std::vector<std::array<std::uint32_t, 3>>;
+
+class EarClipper {
+ public:
+  /// Clips the cycle through `entry` down to nothing, appending triangles (the caller's vertex
+  /// indices, counterclockwise) to `out`. Returns false when a best-effort fallback had to be
+  /// used: the boundary was not weakly simple, and the result may overlap.
+  bool run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
+
+  /// Convex, reflex and ear counts of the cycle through `entry` (nothing is clipped).
+  EarStatistics statistics(Boundary& b, std::uint32_t entry);
+
+  /// The caller's index of the vertex where the first best-effort fallback acted.
+  std::uint32_t best_effort_vertex() const { return best_effort_vertex_; }
+
+ private:
+  struct Candidate {
+    double quality;
+    std::uint32_t node;
+    std::uint32_t stamp;
+  };
+
+  void classify(std::uint32_t entry);
+  bool is_ear(std::uint32_t v) const;
+  bool blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const;
+  bool coincident_blocks(std::uint32_t corner, const Point& wedge_a, const Point& wedge_b,
+                         const Point* diagonal_end, std::uint32_t q) const;
+  double quality(std::uint32_t v) const;
+  void clip(std::uint32_t v);
+  void update_neighbour(std::uint32_t v);
+  void offer(std::uint32_t v);
+  bool pop(std::uint32_t& v);
+  bool fall_back(std::uint32_t near);
+  void finish(std::uint32_t any);
+  void clip_top();
+  void clip_fast(std::uint32_t entry);
+
+  Boundary* b_ = nullptr;
+  TriangleList* out_ = nullptr;
+  EarHeuristic heuristic_ = EarHeuristic::top;
+  std::size_t remaining_ = 0;
+  bool best_effort_ = false;
+  std::uint32_t best_effort_vertex_ = 0;
+  std::uint32_t touched_ = 0;         ///< a live node next to the last fallback's change
+  std::vector<std::uint8_t> reflex_;  ///< not strictly convex, still on the boundary
+  std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> stamp_;  ///< bumped when a node's ear status may have changed
+  std::vector<std::uint32_t> scratch_;
+  std::vector<Candidate> heap_;
+  ReflexGrid grid_;
+};
+
+}  // namespace pear::detail
