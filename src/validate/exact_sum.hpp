@@ -4,9 +4,9 @@
 // far-away, thin polygons cancel catastrophically in floating point, so we sum them exactly: a
 // fixed-point number of 32-bit limbs spanning 2^-544 .. 2^480, each limb kept in an int64 so
 // additions need no carry propagation until about 2^30 of them have piled up. A product is split
-// exactly into two doubles (Dekker's TwoProduct; no FMA needed), both added. Every term of the
-// validator's sums lies in [2^-506, 2^441) because coordinates are checked to be zero or within
-// [2^-200, 2^200] first; a term outside the span sets out_of_range() instead of being lost.
+// exactly into two doubles (Dekker's TwoProduct; no FMA needed), both added. Every set bit of
+// the validator's terms lies in [2^-506, 2^441) because coordinates are checked to be zero or
+// within [2^-200, 2^200] first; a term outside the span sets out_of_range() instead of being lost.
 #pragma once
 
 #include <array>
@@ -85,6 +85,10 @@ class ExactSum {
       mantissa |= std::uint64_t{1} << 52;
       exponent = exponent_field - 1075;
     }
+    // Only the set bits must lie in the span: 2^-500 is 1 * 2^-500, not 2^52 * 2^-552.
+    const int trailing_zeros = std::countr_zero(mantissa);
+    mantissa >>= trailing_zeros;
+    exponent += trailing_zeros;
     const int shift = exponent - base_exponent;
     if (exponent_field == 0x7ff || shift < 0 || shift / limb_bits + 2 >= limb_count) {
       out_of_range_ = true;

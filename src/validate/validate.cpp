@@ -344,7 +344,10 @@ void Validator::check_edges() {
   for (std::size_t lo = 0; lo + 1 < offsets.size(); ++lo) {
     const auto begin = uses.begin() + static_cast<std::ptrdiff_t>(offsets[lo]);
     const auto end = uses.begin() + static_cast<std::ptrdiff_t>(offsets[lo + 1]);
-    std::sort(begin, end, [](const EdgeUse& a, const EdgeUse& b) { return a.hi < b.hi; });
+    // Ties by `who` make the messages deterministic.
+    std::sort(begin, end, [](const EdgeUse& a, const EdgeUse& b) {
+      return a.hi != b.hi ? a.hi < b.hi : a.who < b.who;
+    });
     for (auto use = begin; use != end;) {
       EdgeGroup group;
       group.lo = static_cast<std::uint32_t>(lo);
