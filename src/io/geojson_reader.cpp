@@ -1,0 +1,356 @@
+// GeoJSON (RFC 7946) polygons by a strict recursive-descent scan: no document tree is built;
+// coordinates go straight into rings. Members may come in any order: a "coordinates" (or
+// "geometry", ...) value seen before "type" is skipped and read again once the type is known.
+#include <string>
+#include <vector>
+
+#include "pear/io.hpp"
+#include "scanner.hpp"
+
+namespace pear::io {
+namespace {
+
+using detail::NumberSyntax;
+using detail::Scanner;
+
+constexpr int max_depth = 512;  // deeper nesting is refused rather than overflowing the stack
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+
+// Which GeoJSON types an object may have where it appears.
+enum class Place { top, geometry, feature };
+
+class GeoJsonReader {
+ public:
+  GeoJsonReader(std::string_view text, std::string_view name, const ReadOptions& options)
+      : s_(text, name), options_(options) {}
+
+  std::vector<Polygon> read() {
+    s_.skip_space();
+    if (s_.peek() == '{') {
+      object(Place::top, 0);
+    } else if (s_.peek() == '[') {
+      bare_array();
+    } else {
+      s_.fail_expected(s_.pos, "a GeoJSON object '{' or an array of rings '['");
+    }
+    s_.skip_space();
+    if (!s_.at_end()) s_.fail_expected(s_.pos, "end of file after the GeoJSON value");
+    return std::move(polygons_);
+  }
+
+ private:
+  // Members of one object that matter; offsets of values not yet read.
+  struct Members {
+    std::string type;
+    std::size_t object_start = 0;
+    std::size_t type_at = none;
+    std::size_t coordinates = none, geometry = none, geometries = none, features = none;
+    bool coordinates_read = false, geometry_read = false, geometries_read = false,
+         features_read = false;
+  };
+
+  void object(Place place, int depth) {
+    if (depth > max_depth) s_.fail(s_.pos, "expected at most 512 nested GeoJSON objects");
+    Members m;
+    m.object_start = s_.pos;
+    s_.expect('{', "'{'");
+    s_.skip_space();
+    if (s_.peek() == '}') s_.fail_expected(s_.pos, "a \"type\" member");
+    for (;;) {
+      s_.skip_space();
+      member(m, place, depth);
+      s_.skip_space();
+      if (s_.peek() == '}') break;
+      s_.expect(',', "',' or '}' in an object");
+    }
+    ++s_.pos;
+    const std::size_t end = s_.pos;
+    if (m.type_at == none) s_.fail(m.object_start, "expected a \"type\" member in this object");
+    finish(m, depth);
+    s_.pos = end;
+  }
+
+  void member(Members& m, Place place, int depth) {
+    const std::size_t key_at = s_.pos;
+    const std::string key = string_value("a member name in double quotes");
+    s_.skip_space();
+    s_.expect(':', "':' after a member name");
+    s_.skip_space();
+    const std::size_t value_at = s_.pos;
+    auto remember = [&](std::size_t& slot) {
+      if (slot != none)
+        s_.fail(key_at, "expected each member once but found \"" + key + "\" again");
+      slot = value_at;
+    };
+    if (key == "type") {
+      if (m.type_at != none) s_.fail(key_at, "expected each member once but found \"type\" again");
+      m.type_at = value_at;
+      m.type = string_value("a GeoJSON type name in double quotes");
+      check_type(m, place);
+    } else if (key == "coordinates") {
+      remember(m.coordinates);
+      m.coordinates_read = try_read(m, m.coordinates, depth);
+    } else if (key == "geometry") {
+      remember(m.geometry);
+      m.geometry_read = try_read(m, m.geometry, depth);
+    } else if (key == "geometries") {
+      remember(m.geometries);
+      m.geometries_read = try_read(m, m.geometries, depth);
+    } else if (key == "features") {
+      remember(m.features);
+      m.features_read = try_read(m, m.features, depth);
+    } else {
+      skip_value(depth + 1);
+    }
+  }
+
+  void check_type(const Members& m, Place place) {
+    const std::string& t = m.type;
+    const bool geometry = t == "Polygon" || t == "MultiPolygon" || t == "GeometryCollection";
+    const bool ok = place == Place::top ? geometry || t == "Feature" || t == "FeatureCollection"
+                    : place == Place::feature ? t == "Feature"
+                                              : geometry;
+    if (ok) return;
+    const char* expected =
+        place == Place::top       ? "Polygon, MultiPolygon, Feature, FeatureCollection "
+                                    "or GeometryCollection"
+        : place == Place::feature ? "Feature"
+                                  : "Polygon, MultiPolygon or GeometryCollection";
+    s_.fail(m.type_at, std::string("expected type ") + expected + " but found \"" + t + "\"");
+  }
+
+  // Reads the value at `at` now if the type is known and says it belongs to this member;
+  // otherwise skips it to be read in finish().
+  bool try_read(const Members& m, std::size_t at, int depth) {
+    if (m.type_at != none && wanted(m, at)) {
+      read_member_value(m, at, depth);
+      return true;
+    }
+    skip_value(depth + 1);
+    return false;
+  }
+
+  bool wanted(const Members& m, std::size_t at) const {
+    const std::string& t = m.type;
+    if (at == m.coordinates) return t == "Polygon" || t == "MultiPolygon";
+    if (at == m.geometry) return t == "Feature";
+    if (at == m.geometries) return t == "GeometryCollection";
+    return at == m.features && t == "FeatureCollection";
+  }
+
+  void read_member_value(const Members& m, std::size_t at, int depth) {
+    s_.pos = at;
+    const std::string& t = m.type;
+    if (t == "Polygon") {
+      polygon_coordinates();
+    } else if (t == "MultiPolygon") {
+      array_of([&] { polygon_coordinates(); }, "an array of polygons '['");
+    } else if (t == "Feature") {
+      if (s_.text().substr(s_.pos, 4) == "null") {
+        s_.pos += 4;  // a Feature without a location: no polygon
+      } else {
+        object(Place::geometry, depth + 1);
+      }
+    } else if (t == "GeometryCollection") {
+      array_of([&] { object(Place::geometry, depth + 1); }, "an array of geometries '['");
+    } else {
+      array_of([&] { object(Place::feature, depth + 1); }, "an array of features '['");
+    }
+  }
+
+  void finish(const Members& m, int depth) {
+    struct Need {
+      const char* type;
+      std::size_t at;
+      bool read;
+      const char* member;
+    };
+    const Need needs[] = {{"Polygon", m.coordinates, m.coordinates_read, "coordinates"},
+                          {"MultiPolygon", m.coordinates, m.coordinates_read, "coordinates"},
+                          {"Feature", m.geometry, m.geometry_read, "geometry"},
+                          {"GeometryCollection", m.geometries, m.geometries_read, "geometries"},
+                          {"FeatureCollection", m.features, m.features_read, "features"}};
+    for (const Need& need : needs) {
+      if (m.type != need.type) continue;
+      if (need.at == none)
+        s_.fail(m.object_start,
+                std::string("expected a \"") + need.member + "\" member in this " + need.type);
+      if (!need.read) read_member_value(m, need.at, depth);
+    }
+  }
+
+  template <class Element>
+  void array_of(Element element, const char* what) {
+    s_.expect('[', what);
+    s_.skip_space();
+    if (s_.peek() == ']') {
+      ++s_.pos;
+      return;
+    }
+    for (;;) {
+      s_.skip_space();
+      element();
+      s_.skip_space();
+      if (s_.peek() == ']') break;
+      s_.expect(',', "',' or ']' in an array");
+    }
+    ++s_.pos;
+  }
+
+  void polygon_coordinates() {
+    Polygon polygon;
+    array_of(
+        [&] {
+          const std::size_t ring_at = s_.pos;
+          Ring& ring = polygon.emplace_back();
+          array_of([&] { ring.push_back(position()); }, "a ring: an array of positions '['");
+          detail::finish_ring(ring, s_, ring_at, options_);
+        },
+        "a polygon: an array of rings '['");
+    if (!polygon.empty()) polygons_.push_back(std::move(polygon));
+  }
+
+  Point position() {
+    s_.expect('[', "a position '[x, y]'");
+    s_.skip_space();
+    Point p;
+    p.x = s_.number(NumberSyntax::json);
+    s_.skip_space();
+    s_.expect(',', "',' and the y coordinate");
+    s_.skip_space();
+    p.y = s_.number(NumberSyntax::json);
+    s_.skip_space();
+    while (s_.peek() == ',') {  // an altitude (or more): read and ignored
+      ++s_.pos;
+      s_.skip_space();
+      s_.number(NumberSyntax::json);
+      s_.skip_space();
+    }
+    s_.expect(']', "',' or ']' after a coordinate");
+    return p;
+  }
+
+  // `[[[x,y],...],...]` (one polygon) or `[[[[x,y],...],...],...]` (several), as earcut's fixtures.
+  void bare_array() {
+    int depth = 0;
+    std::size_t p = s_.pos;
+    const std::string_view text = s_.text();
+    while (p < text.size()) {
+      const char c = text[p];
+      if (c == '[') {
+        ++depth;
+      } else if (c != ' ' && c != '\n' && c != '\r' && c != '\t') {
+        break;
+      }
+      ++p;
+    }
+    if (p < text.size() && text[p] == ']' && depth == 1) {  // `[]`: no polygons
+      s_.pos = p + 1;
+      return;
+    }
+    if (depth == 3) {
+      polygon_coordinates();
+    } else if (depth == 4) {
+      array_of([&] { polygon_coordinates(); }, "an array of polygons '['");
+    } else {
+      s_.fail_expected(p, "an array of rings [[[x,y],...],...] or of polygons at nesting depth " +
+                              std::to_string(depth + 1));
+    }
+  }
+
+  std::string string_value(const char* what) {
+    if (s_.peek() != '"') s_.fail_expected(s_.pos, what);
+    const std::size_t start = s_.pos;
+    std::string out;
+    ++s_.pos;
+    const std::string_view text = s_.text();
+    for (;;) {
+      if (s_.at_end()) s_.fail_expected(start, "a string closed by '\"'");
+      const char c = text[s_.pos];
+      if (c == '"') break;
+      if (static_cast<unsigned char>(c) < 0x20)
+        s_.fail_expected(s_.pos, "'\"' or a string character");
+      if (c == '\\') {
+        escape(out);
+        continue;
+      }
+      out.push_back(c);
+      ++s_.pos;
+    }
+    ++s_.pos;
+    return out;
+  }
+
+  void escape(std::string& out) {
+    const std::string_view text = s_.text();
+    const std::size_t at = s_.pos++;
+    const char e = s_.peek();
+    const std::string_view simple = "\"\\/bfnrt";
+    const std::string_view meaning = "\"\\/\b\f\n\r\t";
+    if (const auto k = simple.find(e); e != '\0' && k != std::string_view::npos) {
+      out.push_back(meaning[k]);
+      ++s_.pos;
+      return;
+    }
+    if (e != 'u') s_.fail_expected(at, "an escape such as \\n or \\u00e9");
+    ++s_.pos;
+    for (int i = 0; i < 4; ++i, ++s_.pos) {
+      if (s_.at_end() || !std::isxdigit(static_cast<unsigned char>(text[s_.pos])))
+        s_.fail_expected(s_.pos, "four hex digits after \\u");
+    }
+    out.push_back('?');  // names we compare against are ASCII; the code point itself is not needed
+  }
+
+  void skip_value(int depth) {
+    if (depth > max_depth) s_.fail(s_.pos, "expected at most 512 nested JSON values");
+    const char c = s_.peek();
+    if (c == '{') {
+      ++s_.pos;
+      s_.skip_space();
+      if (s_.peek() == '}') {
+        ++s_.pos;
+        return;
+      }
+      for (;;) {
+        s_.skip_space();
+        string_value("a member name in double quotes");
+        s_.skip_space();
+        s_.expect(':', "':' after a member name");
+        s_.skip_space();
+        skip_value(depth + 1);
+        s_.skip_space();
+        if (s_.peek() == '}') break;
+        s_.expect(',', "',' or '}' in an object");
+      }
+      ++s_.pos;
+    } else if (c == '[') {
+      array_of([&] { skip_value(depth + 1); }, "'['");
+    } else if (c == '"') {
+      string_value("a string");
+    } else if (c == 't' || c == 'f' || c == 'n') {
+      for (const std::string_view word : {"true", "false", "null"}) {
+        if (s_.text().substr(s_.pos, word.size()) == word) {
+          s_.pos += word.size();
+          return;
+        }
+      }
+      s_.fail_expected(s_.pos, "a JSON value");
+    } else {
+      if (c != '-' && !(c >= '0' && c <= '9')) s_.fail_expected(s_.pos, "a JSON value");
+      s_.number(NumberSyntax::json);
+    }
+  }
+
+  Scanner s_;
+  const ReadOptions& options_;
+  std::vector<Polygon> polygons_;
+};
+
+}  // namespace
+
+std::vector<Polygon> read_geojson(std::string_view text, std::string_view name,
+                                  const ReadOptions& options) {
+  return GeoJsonReader(text, name, options).read();
+}
+
+}  // namespace pear::io

@@ -1,0 +1,62 @@
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+
+#include "pear/io.hpp"
+
+namespace pear::io {
+
+namespace {
+bool ends_with_ignoring_case(std::string_view name, std::string_view suffix) {
+  if (name.size() < suffix.size()) return false;
+  const std::string_view tail = name.substr(name.size() - suffix.size());
+  for (std::size_t i = 0; i < suffix.size(); ++i)
+    if (std::tolower(static_cast<unsigned char>(tail[i])) != suffix[i]) return false;
+  return true;
+}
+}  // namespace
+
+Format guess_format(std::string_view name, std::string_view text) {
+  for (const std::string_view ext : {".json", ".geojson"})
+    if (ends_with_ignoring_case(name, ext)) return Format::geojson;
+  if (ends_with_ignoring_case(name, ".wkt")) return Format::wkt;
+  if (ends_with_ignoring_case(name, ".poly")) return Format::poly;
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first == std::string_view::npos) return Format::geojson;
+  const unsigned char c = static_cast<unsigned char>(text[first]);
+  if (std::isalpha(c)) return Format::wkt;
+  if (std::isdigit(c) || c == '#' || c == '+') return Format::poly;
+  return Format::geojson;  // its reader explains best what a text should have started with
+}
+
+std::vector<Polygon> read_text(std::string_view text, Format format, std::string_view name,
+                               const ReadOptions& options) {
+  switch (format) {
+    case Format::wkt:
+      return read_wkt(text, name, options);
+    case Format::poly:
+      return read_poly(text, name, options);
+    case Format::geojson:
+      break;
+  }
+  return read_geojson(text, name, options);
+}
+
+std::vector<Polygon> read_file(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string name = path.string();
+  std::error_code error;
+  if (std::filesystem::is_directory(path, error))
+    throw ParseError(name, 0, 0, 0, "expected a file but found a directory");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ParseError(name, 0, 0, 0, std::string("cannot open: ") + std::strerror(errno));
+  std::string text;
+  char chunk[1 << 16];
+  while (in.read(chunk, sizeof chunk) || in.gcount() > 0)
+    text.append(chunk, static_cast<std::size_t>(in.gcount()));
+  if (in.bad())
+    throw ParseError(name, 0, 0, 0, std::string("cannot read: ") + std::strerror(errno));
+  return read_text(text, guess_format(name, text), name, options);
+}
+
+}  // namespace pear::io

@@ -1,0 +1,216 @@
+// Round trips: what a writer prints, the matching reader gives back bit for bit; and WKT and
+// .poly read the same polygons as the equivalent GeoJSON.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <sstream>
+
+#include "pear/io.hpp"
+
+namespace {
+
+using pear::Point;
+using pear::Polygon;
+using pear::Ring;
+namespace io = pear::io;
+
+bool same_bits(double a, double b) {
+  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
+}
+
+void expect_same_polygons(const std::vector<Polygon>& got, const std::vector<Polygon>& want) {
+  ASSERT_EQ(got.size(), want.size());
+  for (std::size_t p = 0; p < want.size(); ++p) {
+    ASSERT_EQ(got[p].size(), want[p].size()) << "polygon " << p;
+    for (std::size_t r = 0; r < want[p].size(); ++r) {
+      ASSERT_EQ(got[p][r].size(), want[p][r].size()) << "polygon " << p << " ring " << r;
+      for (std::size_t i = 0; i < want[p][r].size(); ++i) {
+        EXPECT_TRUE(same_bits(got[p][r][i].x, want[p][r][i].x)) << got[p][r][i].x;
+        EXPECT_TRUE(same_bits(got[p][r][i].y, want[p][r][i].y)) << got[p][r][i].y;
+      }
+    }
+  }
+}
+
+// A finite double from random bits: every exponent and sign, subnormals and -0 included.
+double random_double(std::mt19937_64& rng) {
+  for (;;) {
+    const double d = std::bit_cast<double>(rng());
+    if (std::isfinite(d)) return d;
+  }
+}
+
+TEST(FormatDouble, ShortestFormReadsBackBitIdentical) {
+  std::mt19937_64 rng(7);
+  for (int i = 0; i < 100000; ++i) {
+    const double d = random_double(rng);
+    const std::string text = io::format_double(d);
+    double back = 0;
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), back);
+    ASSERT_EQ(ec, std::errc()) << text;
+    ASSERT_TRUE(same_bits(back, d)) << text;
+  }
+  EXPECT_EQ(io::format_double(0.1), "0.1");
+  EXPECT_EQ(io::format_double(-0.0), "-0");
+  EXPECT_EQ(io::format_double(1e300), "1e+300");
+}
+
+// Squares with a square hole at random positions and scales, coordinates with random low bits.
+std::vector<Polygon> random_polygons(std::mt19937_64& rng, int count) {
+  std::vector<Polygon> polygons;
+  std::uniform_real_distribution<double> unit(0, 1);
+  for (int k = 0; k < count; ++k) {
+    const double scale = std::ldexp(1.0 + unit(rng), static_cast<int>(rng() % 200) - 100);
+    const double x = (unit(rng) - 0.5) * scale * 1000;
+    const double y = (unit(rng) - 0.5) * scale * 1000;
+    auto at = [&](double u, double v) { return Point{x + u * scale, y + v * scale}; };
+    Ring outer = {at(0, 0), at(4 + unit(rng), 0), at(4, 4 + unit(rng)), at(0, 4)};
+    Ring hole = {at(1 + unit(rng) * 0.1, 1), at(1, 3), at(3, 3 - unit(rng) * 0.1), at(3, 1)};
+    polygons.push_back({outer, hole});
+  }
+  return polygons;
+}
+
+TEST(RoundTrip, GeoJsonPolygons) {
+  std::mt19937_64 rng(1);
+  for (const int count : {1, 5}) {
+    const auto polygons = random_polygons(rng, count);
+    std::ostringstream out;
+    io::write_geojson_polygons(out, polygons);
+    expect_same_polygons(io::read_geojson(out.str()), polygons);
+  }
+}
+
+TEST(RoundTrip, Wkt) {
+  std::mt19937_64 rng(2);
+  const auto polygons = random_polygons(rng, 6);
+  std::ostringstream out;
+  io::write_wkt(out, polygons);
+  expect_same_polygons(io::read_wkt(out.str()), polygons);
+}
+
+TEST(RoundTrip, PolyWithHolesAndIslands) {
+  std::mt19937_64 rng(3);
+  auto polygons = random_polygons(rng, 4);
+  // An island inside the first polygon's hole: the hole point must avoid it.
+  const Ring& hole = polygons[0][1];
+  const Point c{(hole[0].x + hole[2].x) / 2, (hole[0].y + hole[2].y) / 2};
+  const double s = (hole[2].x - hole[0].x) / 8;
+  polygons.push_back(
+      {{{c.x - s, c.y - s}, {c.x + s, c.y - s}, {c.x + s, c.y + s}, {c.x - s, c.y + s}}});
+  std::ostringstream out;
+  io::write_poly(out, polygons);
+  const auto back = io::read_poly(out.str());
+  // read_poly lists polygons in the order of their outer rings in the file, which is this order.
+  expect_same_polygons(back, polygons);
+}
+
+TEST(Formats, WktAndPolyReadLikeGeoJson) {
+  const auto json = io::read_geojson(
+      R"({"type":"MultiPolygon","coordinates":[[[[0,0],[10,0],[10,10],[0,10],[0,0]],)"
+      R"([[2,2],[2,4],[4,4],[4,2],[2,2]]],[[[20,0],[21,0],[20.5,1],[20,0]]]]})");
+  const auto wkt = io::read_wkt(
+      "multipolygon z (((0 0 1, 10 0 1, 10 10 1, 0 10 1, 0 0 1), (2 2 0, 2 4 0, 4 4 0, 4 2 0, 2 2 "
+      "0)),"
+      "\n ((20 0 0,21 0 0,20.5 1 0,20 0 0)))  POLYGON EMPTY");
+  expect_same_polygons(wkt, json);
+  const auto poly = io::read_poly(R"(# a square with a hole, and a triangle
+11 2 1 1
+1 0 0 7 1
+2 10 0 7 1
+3 10 10 7 1
+4 0 10 7 1
+5 2 2 7 1
+6 2 4 7 1
+7 4 4 7 1
+8 4 2 7 1
+9 20 0 7 1
+10 21 0 7 1
+11 20.5 1 7 1
+11 1
+1 1 2 1   # outer ring
+2 2 3 1
+3 3 4 1
+4 4 1 1
+5 5 6 0
+6 6 7 0
+7 7 8 0
+8 8 5 0
+9 9 10 2
+10 10 11 2
+11 11 9 2
+1
+1 3 3
+1
+1 15 5 1.5 -1
+)");
+  expect_same_polygons(poly, json);
+}
+
+TEST(RoundTrip, TriangleMeshesAsObjNodeEleAndGeoJson) {
+  std::mt19937_64 rng(4);
+  const auto polygons = random_polygons(rng, 3);
+  // A valid triangulation of a square with a square hole, in this ring order: 8 triangles.
+  const std::vector<std::array<std::uint32_t, 3>> triangles = {
+      {0, 1, 4}, {1, 7, 4}, {1, 2, 7}, {2, 6, 7}, {2, 3, 6}, {3, 5, 6}, {3, 0, 5}, {0, 4, 5}};
+  std::vector<io::TriangulatedPolygon> meshes;
+  for (const auto& p : polygons) meshes.push_back({p, triangles, {}});
+
+  std::vector<Point> points;  // all polygons' points, as the writers number them
+  std::vector<std::array<std::uint32_t, 3>> all_triangles;
+  for (const auto& p : polygons) {
+    const auto offset = static_cast<std::uint32_t>(points.size());
+    for (const auto& t : triangles)
+      all_triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    for (const auto& ring : p) points.insert(points.end(), ring.begin(), ring.end());
+  }
+  auto expect_mesh = [&](const io::Mesh& mesh) {
+    ASSERT_EQ(mesh.points.size(), points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      EXPECT_TRUE(same_bits(mesh.points[i].x, points[i].x));
+      EXPECT_TRUE(same_bits(mesh.points[i].y, points[i].y));
+    }
+    EXPECT_EQ(mesh.triangles, all_triangles);
+  };
+  std::ostringstream obj, node, ele, json;
+  io::write_obj(obj, meshes);
+  expect_mesh(io::read_obj(obj.str()));
+  io::write_node_ele(node, ele, meshes);
+  expect_mesh(io::read_node_ele(node.str(), ele.str()));
+
+  io::write_geojson(json, meshes);  // each triangle comes back as a 3-point polygon
+  const auto back = io::read_geojson(json.str());
+  ASSERT_EQ(back.size(), all_triangles.size());
+  for (std::size_t t = 0; t < back.size(); ++t) {
+    ASSERT_EQ(back[t].size(), 1u);
+    ASSERT_EQ(back[t][0].size(), 3u);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_TRUE(same_bits(back[t][0][k].x, points[all_triangles[t][k]].x));
+      EXPECT_TRUE(same_bits(back[t][0][k].y, points[all_triangles[t][k]].y));
+    }
+  }
+}
+
+TEST(Writers, RejectTriangleIndexPastThePoints) {
+  const std::vector<io::TriangulatedPolygon> bad = {{{{{0, 0}, {1, 0}, {0, 1}}}, {{0, 1, 3}}, {}}};
+  std::ostringstream out, ele;
+  EXPECT_THROW(io::write_obj(out, bad), std::invalid_argument);
+  EXPECT_THROW(io::write_node_ele(out, ele, bad), std::invalid_argument);
+  EXPECT_THROW(io::write_svg(out, bad), std::invalid_argument);
+}
+
+TEST(ObjReader, NegativeIndicesAndSlashesAsOtherToolsWrite) {
+  const auto mesh = io::read_obj(
+      "# other tool\nv 0 0 0\nv 1 0 0\nvt 0 0\nv 0 1 0\nf 1/1 2/1 3/1\nf -3//1 -2//1 -1//1\n");
+  ASSERT_EQ(mesh.points.size(), 3u);
+  const std::vector<std::array<std::uint32_t, 3>> want = {{0, 1, 2}, {0, 1, 2}};
+  EXPECT_EQ(mesh.triangles, want);
+  EXPECT_THROW(io::read_obj("v 0 0\nv 1 0\nv 0 1\nf 1 2 3 4\n"), io::ParseError);
+  EXPECT_THROW(io::read_obj("v 0 0\nf 1 2 3\n"), io::ParseError);
+}
+
+}  // namespace
