@@ -66,6 +66,7 @@ double expansion_estimate(std::span<const double> e) {
 
 double expansion_value(std::span<const double> e) {
   const double sum = expansion_estimate(e);
+  if (std::isnan(sum)) return sum;  // a NaN input stays visible
   const int sign = expansion_sign(e);
   if ((sum > 0.0 ? 1 : sum < 0.0 ? -1 : 0) == sign) return sum;
   for (std::size_t k = e.size(); k-- > 0;) {

@@ -78,10 +78,12 @@ struct Expansion {
 
 // h = e + f, zero components removed (paper Theorem 13, fast expansion sum: merge by magnitude,
 // then one sweep of two-sums). h must have room for e.size() + f.size() components; it may not
-// alias e or f. Returns the number of components written.
+// alias e or f. Returns the number of components written. The value is exact for any inputs; the
+// result is strongly nonoverlapping when e and f are (nonadjacent ones are), as the theorem needs.
 std::size_t expansion_sum(std::span<const double> e, std::span<const double> f, double* h);
 
-// h = e * b, zero components removed (paper Theorem 19). h needs room for 2 * e.size().
+// h = e * b, zero components removed (paper Theorem 19). h needs room for 2 * e.size(). The value
+// is exact for any e; h is nonoverlapping if e is, and nonadjacent if e is.
 std::size_t scale_expansion(std::span<const double> e, double b, double* h);
 
 // The exact sign of an expansion: that of its most significant nonzero component.
@@ -116,7 +118,9 @@ Expansion<N> operator-(const Expansion<N>& e) {
   return h;
 }
 
-// The exact product of two expansions: the sum over f's components of e scaled by each.
+// The exact product of two expansions: the sum over f's components of e scaled by each. The value
+// is exact; the components are well formed only if e is nonadjacent, so read the sign of a product
+// of general expansions with LongAccumulator, not expansion_sign.
 template <std::size_t N, std::size_t M>
 Expansion<2 * N * M> operator*(const Expansion<N>& e, const Expansion<M>& f) {
   std::array<Expansion<2 * N * M>, 2> sums;  // ping-pong: the running sum moves between the two
@@ -148,9 +152,28 @@ inline Expansion<2> exact_difference(double a, double b) {
   return h;
 }
 
-// The exact a*b - c*d (the paper's Two-Two-Diff of two exact products), zeros removed.
+// e + b, zeros removed (paper Theorem 10, Grow-Expansion): carry b up through e with two-sums.
+// Unlike expansion_sum it keeps a nonadjacent expansion nonadjacent.
+template <std::size_t N>
+Expansion<N + 1> operator+(const Expansion<N>& e, double b) {
+  Expansion<N + 1> h;
+  double q = b;
+  for (std::size_t i = 0; i < e.size; ++i) {
+    double roundoff;
+    two_sum(q, e.term[i], q, roundoff);
+    if (roundoff != 0.0) h.term[h.size++] = roundoff;
+  }
+  if (q != 0.0) h.term[h.size++] = q;
+  return h;
+}
+
+// The exact a*b - c*d (the paper's Two-Two-Diff), zeros removed. Built by growing, so the result is
+// nonadjacent: scaling it (Theorem 19) stays nonadjacent, which expansion_sum requires.
 inline Expansion<4> exact_cross(double a, double b, double c, double d) {
-  return exact_product(a, b) + (-exact_product(c, d));
+  double right_high;
+  double right_low;
+  two_product(c, d, right_high, right_low);
+  return (exact_product(a, b) + (-right_low)) + (-right_high);
 }
 
 }  // namespace pear::detail

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "expansion.hpp"
+#include "long_accumulator.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear {
@@ -38,8 +39,13 @@ double incircle_exact(const Point& a, const Point& b, const Point& c, const Poin
   const Expansion<512> a_term = lift(adx, ady) * minor(bdx, bdy, cdx, cdy);
   const Expansion<512> b_term = lift(bdx, bdy) * minor(cdx, cdy, adx, ady);
   const Expansion<512> c_term = lift(cdx, cdy) * minor(adx, ady, bdx, bdy);
-  const Expansion<1536> exact = (a_term + b_term) + c_term;
-  return detail::expansion_value(exact.view());
+  // The products' values are exact but lift is not nonadjacent, so their components may overlap:
+  // the accumulator reads the sign without relying on their structure.
+  detail::LongAccumulator sum;
+  sum.add(a_term.view());
+  sum.add(b_term.view());
+  sum.add(c_term.view());
+  return sum.value();
 }
 
 // Stages B to D, reached only when the filter cannot decide (near-cocircular input).

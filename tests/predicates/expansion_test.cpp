@@ -42,6 +42,15 @@ void expect_well_formed(std::span<const double> e) {
   }
 }
 
+// Nonadjacent (paper §2.2): besides not overlapping, no component overlaps twice the one below.
+void expect_nonadjacent(std::span<const double> e) {
+  expect_well_formed(e);
+  for (std::size_t i = 0; i + 1 < e.size(); ++i) {
+    EXPECT_LT(2 * std::fabs(e[i]), lowest_bit(e[i + 1]))
+        << std::hexfloat << e[i] << " is adjacent to " << e[i + 1];
+  }
+}
+
 Components sum(const Components& e, const Components& f) {
   Components h(e.size() + f.size());
   h.resize(detail::expansion_sum(e, f, h.data()));
@@ -95,8 +104,28 @@ TEST(Expansion, SumScaleAndProductAreExact) {
   }
 }
 
-TEST(Expansion, ProductOfExpansionsIsExact) {
+// The chain of incircle's stage B: a cross product grown into a nonadjacent expansion, scaled
+// twice (still nonadjacent, paper Theorem 19), then summed (strongly nonoverlapping, Theorem 13).
+TEST(Expansion, CrossScaleAndSumKeepTheirStructure) {
   Random random(23);
+  for (int i = 0; i < 2000; ++i) {
+    double v[6];
+    for (double& x : v) x = random.with_exponent(random.integer(-60, 60));
+    const detail::Expansion<4> cross = detail::exact_cross(v[0], v[1], v[2], v[3]);
+    ASSERT_EQ(exact_sum(cross.view()), exact(v[0]) * exact(v[1]) - exact(v[2]) * exact(v[3]));
+    expect_nonadjacent(cross.view());
+    const detail::Expansion<16> scaled = (cross * v[4]) * v[5];
+    ASSERT_EQ(exact_sum(scaled.view()), exact_sum(cross.view()) * exact(v[4]) * exact(v[5]));
+    expect_nonadjacent(scaled.view());
+    const detail::Expansion<32> total = scaled + (cross * v[5]) * v[4];
+    ASSERT_EQ(exact_sum(total.view()), 2 * exact_sum(scaled.view()));
+    expect_well_formed(total.view());
+  }
+}
+
+// Products of general expansions: the value is exact whatever the components' structure.
+TEST(Expansion, ProductOfExpansionsIsExact) {
+  Random random(24);
   for (int i = 0; i < 300; ++i) {
     detail::Expansion<4> e;
     detail::Expansion<4> f;
@@ -107,7 +136,6 @@ TEST(Expansion, ProductOfExpansionsIsExact) {
     }
     const detail::Expansion<32> product = e * f;
     ASSERT_EQ(exact_sum(product.view()), exact_sum(e.view()) * exact_sum(f.view()));
-    expect_well_formed(product.view());
   }
 }
 

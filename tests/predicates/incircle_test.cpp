@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -63,6 +64,16 @@ TEST(Incircle, ConventionInsideIsPositive) {
   EXPECT_LT(incircle(a, b, c, {2, 2}), 0.0);
   EXPECT_EQ(incircle(a, b, c, {0, -1}), 0.0);
   EXPECT_LT(incircle(c, b, a, {0, 0}), 0.0);  // clockwise a, b, c reverse the sign
+}
+
+TEST(Incircle, NanCoordinateGivesNan) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int slot = 0; slot < 8; ++slot) {
+    std::array<double, 8> v{1.0, 0.0, 0.0, 1.0, -1.0, 0.0, 0.0, -1.0};  // cocircular: no early exit
+    v[slot] = nan;
+    EXPECT_TRUE(std::isnan(incircle({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, {v[6], v[7]})))
+        << "slot " << slot;
+  }
 }
 
 TEST(Incircle, RandomPointsMatchReference) {

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 #include "pear/predicates.hpp"
@@ -51,6 +53,16 @@ TEST(Orient2d, ConventionCounterclockwiseIsPositive) {
   EXPECT_GT(orient2d({0, 0}, {1, 0}, {0, 1}), 0.0);
   EXPECT_LT(orient2d({0, 0}, {0, 1}, {1, 0}), 0.0);
   EXPECT_EQ(orient2d({0, 0}, {1, 1}, {2, 2}), 0.0);
+}
+
+// Outside the domain nothing is promised but the absence of undefined behaviour; NaN stays NaN.
+TEST(Orient2d, NanCoordinateGivesNan) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (int slot = 0; slot < 6; ++slot) {
+    std::array<double, 6> v{0.5, 0.25, 1.0, 0.75, 0.125, 2.0};
+    v[slot] = nan;
+    EXPECT_TRUE(std::isnan(orient2d({v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}))) << "slot " << slot;
+  }
 }
 
 TEST(Orient2d, RandomPointsMatchReference) {
