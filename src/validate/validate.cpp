@@ -16,6 +16,7 @@
 // vertices include one point twice ("collapsed", only with allow_zero_area) carry no area and no
 // boundary, so they are left out of the edge and count checks.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -24,6 +25,7 @@
 #include <numeric>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exact_sum.hpp"
@@ -215,22 +217,51 @@ bool Validator::clean_rings() {
   return true;
 }
 
+// A hash of a point's exact coordinates (-0.0 counted as 0.0, as == does), by the splitmix64
+// finalizer: sorting 64-bit hashes is much faster than sorting indices by coordinates.
+std::uint64_t point_hash(const Point& p) {
+  auto mix = [](std::uint64_t z) {
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+  };
+  const auto x = std::bit_cast<std::uint64_t>(p.x == 0 ? 0.0 : p.x);
+  const auto y = std::bit_cast<std::uint64_t>(p.y == 0 ? 0.0 : p.y);
+  return mix(mix(x) + y);
+}
+
+// Every index maps to the smallest index with the same coordinates.
 void Validator::canonicalize() {
   const auto& points = polygon_.points;
   const auto count = static_cast<std::uint32_t>(points.size());
-  std::vector<std::uint32_t> order(count);
-  std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-    const Point& p = points[a];
-    const Point& q = points[b];
-    if (p.x != q.x) return p.x < q.x;
-    if (p.y != q.y) return p.y < q.y;
-    return a < b;
-  });
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> hashed(count);
+  for (std::uint32_t i = 0; i < count; ++i) hashed[i] = {point_hash(points[i]), i};
+  std::sort(hashed.begin(), hashed.end());
   canonical_.resize(count);
+  std::vector<std::uint32_t> run;
   for (std::uint32_t i = 0; i < count;) {
-    std::uint32_t j = i;
-    while (j < count && points[order[j]] == points[order[i]]) canonical_[order[j++]] = order[i];
+    std::uint32_t j = i + 1;
+    while (j < count && hashed[j].first == hashed[i].first) ++j;
+    if (j == i + 1) {  // the usual case: a point of its own
+      canonical_[hashed[i].second] = hashed[i].second;
+      i = j;
+      continue;
+    }
+    // Equal hashes: group by exact coordinates (a collision may mix different points).
+    run.clear();
+    for (std::uint32_t k = i; k < j; ++k) run.push_back(hashed[k].second);
+    std::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
+      const Point& p = points[a];
+      const Point& q = points[b];
+      if (p.x != q.x) return p.x < q.x;
+      if (p.y != q.y) return p.y < q.y;
+      return a < b;
+    });
+    for (std::size_t k = 0; k < run.size();) {
+      std::size_t l = k;
+      while (l < run.size() && points[run[l]] == points[run[k]]) canonical_[run[l++]] = run[k];
+      k = l;
+    }
     i = j;
   }
   on_boundary_.assign(count, 0);
