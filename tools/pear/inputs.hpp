@@ -1,0 +1,45 @@
+// Input files for the subcommands: expanding directories and globs, reading plain, gzipped and
+// standard input, and the progress bar and summary for long runs.
+#pragma once
+
+#include <chrono>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pear/io.hpp"
+
+namespace pear::cli {
+
+/// The files named by the arguments: "-" (stdin) and existing files as given, directories
+/// walked recursively for .json/.geojson/.wkt/.poly (optionally .gz) files in name order, other
+/// arguments expanded as globs. An argument that names nothing is kept, so reading it reports
+/// the problem in order with the other files.
+std::vector<std::string> expand_inputs(std::span<const std::string_view> args);
+
+/// Reads and parses one input (gzip by zlib when the name ends in .gz). Throws
+/// pear::io::ParseError naming the file on any problem.
+std::vector<Polygon> read_input(const std::string& name, const io::ReadOptions& options);
+
+/// Progress on stderr, only when it is a terminal and there are many files; then a summary.
+class Progress {
+ public:
+  explicit Progress(std::size_t files);
+  void advance();
+  /// Prints a message on its own line (clearing the bar first).
+  void message(const std::string& text);
+  /// "pear: N files, P polygons, F failures, T s" on stderr when there was more than one file.
+  void summary(std::size_t polygons, std::size_t failures);
+
+ private:
+  void draw();
+  std::size_t files_;
+  std::size_t done_ = 0;
+  bool bar_;
+  std::chrono::steady_clock::time_point start_;
+  std::chrono::steady_clock::time_point last_draw_;
+};
+
+}  // namespace pear::cli
