@@ -144,6 +144,10 @@ bool Validator::check_structure() {
     });
     return false;
   }
+  if (triangles_.size() >= std::numeric_limits<std::uint32_t>::max()) {
+    fail([&] { return std::to_string(triangles_.size()) + " triangles: too many to check"; });
+    return false;
+  }
   if (starts.front() != 0 || starts.back() != count ||
       !std::is_sorted(starts.begin(), starts.end())) {
     fail([] {

@@ -109,6 +109,17 @@ TEST(Validate, AcceptsEitherCopyOfATouchingPoint) {
   EXPECT_TRUE(report.valid) << messages(report);
 }
 
+TEST(Validate, CollapsedTrianglesAreNotCounted) {
+  // (0, 4, 5) names the touching point twice: zero area, no boundary, not one of the 5.
+  const Triangles triangles = {{0, 1, 6}, {1, 2, 6}, {6, 2, 5}, {5, 2, 3}, {4, 5, 3}, {0, 4, 5}};
+  const auto strict = check(touching_hole, triangles);
+  EXPECT_FALSE(strict.valid);
+  EXPECT_EQ(strict.zero_area_triangles, 1u);
+  EXPECT_TRUE(has_message(strict, "triangle 5 (0, 4, 5) has zero area")) << messages(strict);
+  const auto relaxed = check(touching_hole, triangles, {.allow_zero_area = true});
+  EXPECT_TRUE(relaxed.valid) << messages(relaxed);
+}
+
 TEST(Validate, RejectsTouchingHoleTriangulatedAcrossTheHole) {
   // Triangle (0, 1, 5) = (0,0) (4,0) (1,2) covers the hole's vertex region: it replaces
   // (0, 1, 6) and (6, 2, 5) is then wrong as well.
