@@ -1,6 +1,7 @@
 // `pear triangulate FILE...`: read, triangulate, optionally validate, report and write.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 #include "cli.hpp"
@@ -114,6 +115,9 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
   Triangulation<std::uint32_t> result = triangulator.triangulate(polygon, s.options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // Fault injection for the CLI test of exit code 3 (no correct engine result is invalid).
+  if (std::getenv("PEAR_TEST_DROP_A_TRIANGLE") != nullptr && !result.triangles.empty())
+    result.triangles.pop_back();
   detail::FlatPolygon flat;
   detail::flatten(polygon, flat);
   const std::size_t vertices = flat.points.size();

@@ -1,0 +1,268 @@
+#!/usr/bin/env python3
+"""Runs the built `pear` binary: exit codes 0/1/2/3, the --stats keys, outputs, inputs.
+
+usage: test_cli.py PATH/TO/pear   (meson passes the executable; PEAR_CORPUS names corpus/)
+"""
+import gzip
+import json
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+PEAR = None
+CORPUS = os.environ.get("PEAR_CORPUS", os.path.join(os.path.dirname(__file__), "..", "..", "corpus"))
+SOUTH_AFRICA = os.path.join(CORPUS, "countries", "south_africa_000.json")
+
+STATS_KEYS = {"file", "index", "vertices", "holes", "triangles", "status", "algorithm", "threads",
+              "cdt", "ms", "min_angle_avg_deg", "dev60_avg_deg"}
+SQUARE_WITH_HOLE = ('{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]],'
+                    '[[2,2],[2,8],[8,8],[8,2],[2,2]]]}')
+BOWTIE = '{"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}'
+
+
+def pear(*args, stdin=None, env=None):
+    full_env = dict(os.environ)
+    full_env.update(env or {})
+    return subprocess.run([PEAR, *args], input=stdin, capture_output=True, text=True,
+                          env=full_env, timeout=120)
+
+
+def stats_lines(result):
+    return [json.loads(line) for line in result.stdout.splitlines() if line.strip()]
+
+
+def manifest_row(folder, name):
+    with open(os.path.join(CORPUS, folder, "MANIFEST.tsv")) as f:
+        for line in f:
+            fields = line.rstrip("\n").split("\t")
+            if fields[0] == name:
+                return int(fields[1]), int(fields[2])
+    raise KeyError(name)
+
+
+class Files(unittest.TestCase):
+    def setUp(self):
+        self.dir = tempfile.TemporaryDirectory()
+
+    def tearDown(self):
+        self.dir.cleanup()
+
+    def write(self, name, text, mode="w"):
+        path = os.path.join(self.dir.name, name)
+        with open(path, mode) as f:
+            f.write(text)
+        return path
+
+
+class ExitCodes(Files):
+    def test_success_with_stats_and_validation(self):
+        r = pear("triangulate", SOUTH_AFRICA, "--stats", "--validate")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        [line] = stats_lines(r)
+        self.assertLessEqual(STATS_KEYS | {"valid", "area_rel_error"}, set(line))
+        vertices, holes = manifest_row("countries", "south_africa_000.json")
+        self.assertEqual((line["vertices"], line["holes"]), (vertices, holes))
+        self.assertEqual(line["status"], "ok")
+        self.assertIs(line["valid"], True)
+        self.assertIs(line["cdt"], False)
+        self.assertEqual(line["triangles"], vertices + 2 * holes - 2)
+        self.assertLess(line["area_rel_error"], 1e-12)
+        self.assertGreater(line["min_angle_avg_deg"], 0)
+        self.assertLessEqual(line["min_angle_avg_deg"], 60)
+
+    def test_bad_input_names_the_place_and_other_files_go_on(self):
+        bad = self.write("bad.json", '{"type":"Polygon",\n"coordinates":[[[0,0],[NaN,1],[1,1]]]}')
+        good = self.write("good.json", SQUARE_WITH_HOLE)
+        r = pear("triangulate", "--stats", bad, good)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn(bad + ":2:24: expected a number but found 'NaN'", r.stderr)
+        [line] = stats_lines(r)
+        self.assertEqual(line["file"], good)
+        self.assertEqual(line["triangles"], 8)
+
+    def test_each_bad_file_is_exit_one_with_its_name(self):
+        cases = {
+            "empty.json": ("", ":1:1: expected"),
+            "binary.json": ("\x00\x01\x02", ":1:1: expected"),
+            "truncated.json": ('{"type":"Polygon","coordinates":[[[0,0],[1,', ":1:44: expected a number"),
+            "huge.wkt": ("POLYGON ((0 0, 1e400 0, 1 1, 0 0))", ":1:16: expected a number within"),
+            "small.json": ('[[[0,0],[1,1]]]', ":1:2: expected a ring of at least 3 points"),
+            "type.json": ('{"type":"Point","coordinates":[0,0]}', ":1:9: expected type"),
+        }
+        for name, (text, message) in cases.items():
+            with self.subTest(name):
+                path = self.write(name, text)
+                r = pear("triangulate", path)
+                self.assertEqual(r.returncode, 1, r.stderr)
+                self.assertIn(path + message, r.stderr)
+        r = pear("triangulate", os.path.join(self.dir.name, "missing.json"))
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("missing.json: cannot open", r.stderr)
+
+    def test_not_simple_polygon_is_bad_input(self):
+        r = pear("triangulate", "--stats", "-", stdin=BOWTIE)
+        self.assertEqual(r.returncode, 1)
+        [line] = stats_lines(r)
+        self.assertEqual(line["status"], "not_simple")
+        self.assertIn("not_simple", r.stderr)
+
+    def test_usage_errors(self):
+        for args, message in [
+            ([], "usage"),
+            (["frobnicate"], "unknown command"),
+            (["triangulate"], "needs at least one FILE"),
+            (["triangulate", "--bogus", SOUTH_AFRICA], "unknown option --bogus"),
+            (["triangulate", "--algorithm", "fastest", SOUTH_AFRICA], "unknown algorithm 'fastest'"),
+            (["triangulate", "--algorithm", "mark-and-cut", SOUTH_AFRICA],
+             "algorithm mark-and-cut is not available in this build"),
+            (["triangulate", "--cdt", SOUTH_AFRICA], "--cdt is not available in this build"),
+            (["triangulate", "--threads", "0", SOUTH_AFRICA], "--threads expects an integer"),
+            (["triangulate", "-o", "out.xyz", SOUTH_AFRICA], "cannot tell the format"),
+            (["triangulate", "-o", "out.svg", SOUTH_AFRICA, SOUTH_AFRICA], "-o FILE takes one input"),
+            (["generate", "nonagon", "10"], "unknown kind"),
+            (["generate", "star", "ten"], "N must be a positive integer"),
+        ]:
+            with self.subTest(args=args):
+                r = pear(*args)
+                self.assertEqual(r.returncode, 2, r.stderr)
+                self.assertIn(message, r.stderr)
+                self.assertEqual(r.stdout, "")
+
+    def test_invalid_result_is_exit_three(self):
+        r = pear("triangulate", SOUTH_AFRICA, "--validate", "--stats",
+                 env={"PEAR_TEST_DROP_A_TRIANGLE": "1"})
+        self.assertEqual(r.returncode, 3, r.stderr)
+        [line] = stats_lines(r)
+        self.assertIs(line["valid"], False)
+        self.assertIn("invalid triangulation", r.stderr)
+        # Without --validate nobody checks: the run itself succeeds.
+        r = pear("triangulate", SOUTH_AFRICA, env={"PEAR_TEST_DROP_A_TRIANGLE": "1"})
+        self.assertEqual(r.returncode, 0)
+
+    def test_help_for_every_command(self):
+        for command in ["triangulate", "stats", "generate"]:
+            r = pear(command, "--help")
+            self.assertEqual(r.returncode, 0)
+            self.assertIn("usage: pear " + command, r.stdout)
+        r = pear("triangulate", "--help")
+        for name in ["auto", "sequential", "mark-and-cut", "partition-and-cut", "divide-and-conquer"]:
+            self.assertIn(name, r.stdout)
+
+
+class Outputs(Files):
+    def triangulate_to(self, name, *extra):
+        out = os.path.join(self.dir.name, name)
+        r = pear("triangulate", SOUTH_AFRICA, "--stats", "-o", out, *extra)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        return out, stats_lines(r)[0]
+
+    def test_obj(self):
+        out, line = self.triangulate_to("sa.obj")
+        with open(out) as f:
+            lines = f.read().splitlines()
+        self.assertEqual(sum(l.startswith("v ") for l in lines), line["vertices"])
+        self.assertEqual(sum(l.startswith("f ") for l in lines), line["triangles"])
+
+    def test_geojson_triangles(self):
+        out, line = self.triangulate_to("sa.geojson")
+        with open(out) as f:
+            doc = json.load(f)
+        [feature] = doc["features"]
+        self.assertEqual(len(feature["geometry"]["coordinates"]), line["triangles"])
+        for triangle in feature["geometry"]["coordinates"]:
+            self.assertEqual(len(triangle[0]), 4)
+            self.assertEqual(triangle[0][0], triangle[0][3])
+
+    def test_node_ele(self):
+        out, line = self.triangulate_to("sa.ele")
+        base = out[:-4]
+        with open(base + ".node") as f:
+            self.assertEqual(int(f.readline().split()[0]), line["vertices"])
+        with open(base + ".ele") as f:
+            self.assertEqual(int(f.readline().split()[0]), line["triangles"])
+
+    def test_svg(self):
+        out, line = self.triangulate_to("sa.svg")
+        with open(out) as f:
+            text = f.read()
+        self.assertTrue(text.startswith("<svg"))
+        self.assertTrue(text.rstrip().endswith("</svg>"))
+        self.assertIn("%d triangles" % line["triangles"], text)
+
+    def test_directory_output_and_stdout(self):
+        outdir = os.path.join(self.dir.name, "out") + "/"
+        r = pear("triangulate", os.path.join(CORPUS, "glyphs"), "-o", outdir, "--format", "obj")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(len(os.listdir(outdir)), 4)
+        r = pear("triangulate", "-", "-o", "-", "--format", "geojson", stdin=SQUARE_WITH_HOLE)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(len(json.loads(r.stdout)["features"][0]["geometry"]["coordinates"]), 8)
+
+
+class Inputs(Files):
+    def test_directory_gives_a_line_per_polygon_and_a_summary(self):
+        r = pear("triangulate", "--stats", os.path.join(CORPUS, "glyphs"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = stats_lines(r)
+        self.assertEqual(len(lines), 4)
+        self.assertIn("pear: 4 files, 4 polygons, 0 failures", r.stderr)
+        self.assertNotIn("\r", r.stderr)  # no progress bar when stderr is not a terminal
+
+    def test_multipolygon_gives_indexed_lines(self):
+        path = self.write("two.json", '{"type":"MultiPolygon","coordinates":[[[[0,0],[1,0],[0,1]]],'
+                                      '[[[5,5],[6,5],[6,6],[5,6]]]]}')
+        lines = stats_lines(pear("triangulate", "--stats", path))
+        self.assertEqual([(l["index"], l["vertices"], l["triangles"]) for l in lines],
+                         [(0, 3, 1), (1, 4, 2)])
+
+    def test_gzip_wkt_poly_and_glob(self):
+        gz = os.path.join(self.dir.name, "square.json.gz")
+        with gzip.open(gz, "wt") as f:
+            f.write(SQUARE_WITH_HOLE)
+        self.write("square.wkt", "POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 8, 8 8, 8 2, 2 2))")
+        self.write("square.poly", "8 2 0 0\n0 0 0\n1 10 0\n2 10 10\n3 0 10\n4 2 2\n5 2 8\n6 8 8\n"
+                                  "7 8 2\n8 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 7\n"
+                                  "7 7 4\n1\n0 5 5\n")
+        r = pear("triangulate", "--stats", "--validate", os.path.join(self.dir.name, "square.*"))
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = stats_lines(r)
+        self.assertEqual(len(lines), 3)
+        for line in lines:
+            self.assertEqual((line["vertices"], line["holes"], line["triangles"]), (8, 1, 8))
+            self.assertIs(line["valid"], True)
+
+
+class StatsAndGenerate(Files):
+    def test_ear_statistics(self):
+        r = pear("stats", "--json", "-", stdin='[[[0,0],[4,0],[4,4],[0,4]]]')
+        self.assertEqual(r.returncode, 0, r.stderr)
+        [line] = stats_lines(r)
+        # A convex quadrilateral: every vertex convex and an ear.
+        self.assertEqual((line["vertices"], line["convex"], line["reflex"], line["ears"]), (4, 4, 0, 4))
+        self.assertEqual(line["convex_ear_fraction"], 1.0)
+        r = pear("stats", "--json", SOUTH_AFRICA)
+        [line] = stats_lines(r)
+        self.assertEqual(line["convex"] + line["reflex"], line["vertices"])
+        self.assertLessEqual(line["ears"], line["convex"])
+        table = pear("stats", SOUTH_AFRICA)
+        self.assertEqual(table.returncode, 0)
+        self.assertIn("ears/convex", table.stdout)
+
+    def test_generate_is_deterministic_and_triangulates(self):
+        first = pear("generate", "star", "100", "--seed", "3")
+        self.assertEqual(first.returncode, 0, first.stderr)
+        self.assertEqual(pear("generate", "star", "100", "--seed", "3").stdout, first.stdout)
+        self.assertNotEqual(pear("generate", "star", "100", "--seed", "4").stdout, first.stdout)
+        self.assertEqual(json.loads(first.stdout)["type"], "Polygon")
+        r = pear("triangulate", "--stats", "--validate", "-", stdin=first.stdout)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        [line] = stats_lines(r)
+        self.assertEqual(line["vertices"], 100)
+        self.assertIs(line["valid"], True)
+
+
+if __name__ == "__main__":
+    PEAR = os.path.abspath(sys.argv.pop(1))
+    unittest.main(verbosity=2)
