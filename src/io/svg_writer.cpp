@@ -143,9 +143,12 @@ void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
   bool parts = false;
   for (const auto& p : polygons) parts = parts || !p.part.empty();
 
+  // The title gets its own band under the picture, so it never covers the polygon.
+  const double font = std::max(10.0, options.size / 60);
+  const double band = options.title.empty() ? 0 : font * 1.6;
   std::string width, height;
   pixel(width, view.width);
-  pixel(height, view.height);
+  pixel(height, view.height + band);
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
       << "\" viewBox=\"0 0 " << width << ' ' << height << "\">\n";
   if (!options.title.empty()) out << "<title>" << escape_xml(options.title) << "</title>\n";
@@ -167,9 +170,9 @@ void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
   out << "<path fill=\"none\" stroke=\"#1b2838\" stroke-width=\"" << outline
       << "\" stroke-linejoin=\"round\" d=\"" << outline_path << "\"/>\n";
   if (!options.title.empty())
-    out << "<text x=\"" << view.margin << "\" y=\"" << view.height - view.margin / 2
-        << "\" font-family=\"sans-serif\" font-size=\"" << std::max(10.0, options.size / 60)
-        << "\" fill=\"#333\">" << escape_xml(options.title) << "</text>\n";
+    out << "<text x=\"" << view.margin << "\" y=\"" << view.height + band * 0.6
+        << "\" font-family=\"sans-serif\" font-size=\"" << font << "\" fill=\"#333\">"
+        << escape_xml(options.title) << "</text>\n";
   out << "</svg>\n";
 }
 
