@@ -78,21 +78,22 @@ void ExecutorImpl::worker_loop(Slot& own) {
       continue;
     }
     if (spin_for_work(&own, nullptr)) continue;
-    const std::uint64_t ticket = gate.prepare_wait();
+    gate.prepare_wait(own.waiter);
     if (work_visible()) {
-      gate.cancel_wait();
+      gate.cancel_wait(own.waiter);
       continue;
     }
     if (stopping_.load(std::memory_order_seq_cst)) {
-      gate.cancel_wait();
+      gate.cancel_wait(own.waiter);
       return;
     }
-    gate.commit_wait(ticket);
+    gate.commit_wait(own.waiter);
   }
 }
 
 void ExecutorImpl::help_until(WaitCounter& counter) {
   Slot* own = own_slot();
+  IdleGate::Waiter waiter;
   while (!counter.done()) {
     if (Job* job = find_work(own)) {
       job->execute(job);
@@ -100,12 +101,12 @@ void ExecutorImpl::help_until(WaitCounter& counter) {
     }
     if (spin_for_work(own, &counter)) continue;
     if (!counter.mark_sleeper()) break;
-    const std::uint64_t ticket = gate.prepare_wait();
+    gate.prepare_wait(waiter);
     if (counter.done() || work_visible()) {
-      gate.cancel_wait();
+      gate.cancel_wait(waiter);
       continue;
     }
-    gate.commit_wait(ticket);
+    gate.commit_wait(waiter);
   }
   counter.clear_sleeper();
 }

@@ -1,6 +1,7 @@
 // The executor's insides: per-thread deques, the shared queue, the idle gate.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
@@ -17,47 +18,56 @@
 namespace pear::detail {
 
 /// Where idle threads sleep without losing a wake-up: prepare (announce), re-check every place
-/// work or completion can appear, then commit (sleep unless the epoch moved since prepare).
-/// A notifier publishes first, then calls notify: the seq_cst fences on both sides make at
-/// least one of them see the other (Dekker), so no sleeper misses work published before it.
+/// work or completion can appear, then commit (sleep until signalled) or cancel. A notifier
+/// publishes first, then calls notify: the seq_cst fences on both sides make at least one of
+/// them see the other (Dekker), so no sleeper misses work published before it slept.
+/// Each sleeper has its own record; a notifier takes records off the list as it signals them,
+/// so a burst of pushes wakes each sleeper once rather than signalling the same one again.
 class IdleGate {
  public:
-  std::uint64_t prepare_wait() noexcept {
-    waiters_.fetch_add(1, std::memory_order_seq_cst);
-    fence(std::memory_order_seq_cst);  // our announcement before our re-check's loads
-    return epoch_.load(std::memory_order_seq_cst);
-  }
-  void cancel_wait() noexcept { waiters_.fetch_sub(1, std::memory_order_relaxed); }
-  void commit_wait(std::uint64_t ticket) {
+  struct Waiter {
+    std::condition_variable wake;
+    bool signalled = false;  // under the gate's mutex
+  };
+
+  void prepare_wait(Waiter& waiter) {
     {
-      std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return epoch_.load(std::memory_order_relaxed) != ticket; });
+      std::lock_guard lock(mutex_);
+      waiter.signalled = false;
+      sleepers_.push_back(&waiter);
+      waiters_.fetch_add(1, std::memory_order_seq_cst);
     }
+    fence(std::memory_order_seq_cst);  // our announcement before our re-check's loads
+  }
+  void cancel_wait(Waiter& waiter) {
+    std::lock_guard lock(mutex_);
+    if (waiter.signalled) return;  // a notifier took us off the list already
+    sleepers_.erase(std::find(sleepers_.begin(), sleepers_.end(), &waiter));
     waiters_.fetch_sub(1, std::memory_order_relaxed);
+  }
+  void commit_wait(Waiter& waiter) {
+    std::unique_lock lock(mutex_);
+    waiter.wake.wait(lock, [&] { return waiter.signalled; });
   }
   /// Wakes up to count sleepers (cheap when none sleeps: a fence and a load).
   void notify(std::size_t count) {
     fence(std::memory_order_seq_cst);  // the published work before our load of waiters
-    const std::uint32_t waiting = waiters_.load(order(std::memory_order_relaxed));
-    if (waiting == 0) return;
-    {
-      // Under the mutex, so a sleeper between its predicate check and its sleep cannot miss it.
-      std::lock_guard lock(mutex_);
-      epoch_.fetch_add(1, std::memory_order_seq_cst);
-    }
-    if (count >= waiting) {
-      wake_.notify_all();
-    } else {
-      for (std::size_t i = 0; i < count; ++i) wake_.notify_one();
+    if (waiters_.load(order(std::memory_order_relaxed)) == 0) return;
+    std::lock_guard lock(mutex_);
+    for (; count > 0 && !sleepers_.empty(); --count) {
+      Waiter* waiter = sleepers_.back();  // the latest sleeper: its cache is the warmest
+      sleepers_.pop_back();
+      waiters_.fetch_sub(1, std::memory_order_relaxed);
+      waiter->signalled = true;
+      waiter->wake.notify_one();  // under the mutex: the waiter may be gone right after
     }
   }
   void notify_all() { notify(static_cast<std::size_t>(-1)); }
 
  private:
   alignas(64) std::atomic<std::uint32_t> waiters_{0};
-  std::atomic<std::uint64_t> epoch_{0};
   std::mutex mutex_;
-  std::condition_variable wake_;
+  std::vector<Waiter*> sleepers_;
 };
 
 /// A deque and its owner-only stealing state. Worker slots belong to one thread for life;
@@ -66,6 +76,7 @@ struct Slot {
   WorkStealingDeque<Job*> deque{256};
   std::atomic<bool> claimed{false};
   std::size_t last_victim = static_cast<std::size_t>(-1);
+  IdleGate::Waiter waiter;  // the owner's sleeping record
 };
 
 class ExecutorImpl {

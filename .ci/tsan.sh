@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs).
+# Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
+# The sanitizer build is separate: only the library and the scheduler tests are compiled.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${1:-$root/build-tsan}"
+# gcc 12 and clang 14 both give a clean run here; gcc is the default compiler of the project.
+export CXX="${CXX:-g++}"
+
+if [[ ! -f "$build/build.ninja" ]]; then
+  meson setup "$build" "$root" \
+    -Db_sanitize=thread -Db_lundef=false -Dbuildtype=debugoptimized \
+    -Dbench=disabled -Dcli=disabled -Dtests=enabled -Dfuzz=disabled
+fi
+ninja -C "$build" -j"${JOBS:-2}" \
+  tests/scheduler/scheduler_deque_test \
+  tests/scheduler/scheduler_executor_test \
+  tests/scheduler/scheduler_graph_test
+
+# halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
+export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
+meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
