@@ -148,7 +148,7 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
   return hit;
 }
 
-/// Eberly: the endpoint M of the hit edge with larger x, unless vertices lie in the triangle
+/// Eberly's method: an endpoint M of the hit edge, unless vertices lie in the triangle
 /// (h, crossing, M); then the one seen at the smallest angle from the ray (nearest on ties).
 /// Every decision is an exact orientation or comparison; the crossing x only bounds the search.
 Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
@@ -156,13 +156,15 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
   const Point a = b_->pos[s], c = b_->pos[b_->next[s]];
   if (a.y == h.y && a.x <= h.x) return a;
   if (c.y == h.y && c.x <= h.x) return c;
-  const Point m = a.x > c.x || (a.x == c.x && a.y < c.y) ? a : c;
+  // The endpoint with the smaller x: the triangle (h, crossing, M) then lies left of h, where
+  // the hole being joined cannot reach.
+  const Point m = a.x < c.x || (a.x == c.x && a.y < c.y) ? a : c;
   const double up = m.y > h.y ? 1 : -1;
   const double edge_side = orient2d(a, c, h);
   Point best = m;
   const auto better = [&](const Point& v) {
-    const double turn = orient2d(h, best, v) * up;  // < 0: v is closer to the ray
-    if (turn != 0) return turn < 0;
+    const double turn = orient2d(h, best, v) * up;  // > 0: v is closer to the ray
+    if (turn != 0) return turn > 0;
     return std::abs(v.x - h.x) + std::abs(v.y - h.y) <
            std::abs(best.x - h.x) + std::abs(best.y - h.y);
   };
@@ -176,7 +178,7 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
         const double es = orient2d(a, c, v);
         if (es != 0 && (es > 0) != (edge_side > 0)) continue;  // beyond the hit edge
         const double hs = orient2d(h, m, v) * up;
-        if (hs > 0) continue;  // on the far side of segment h-M from the ray
+        if (hs < 0) continue;  // on the far side of segment h-M from the ray
         if (better(v)) best = v;
       }
     }

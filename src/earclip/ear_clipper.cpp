@@ -30,13 +30,54 @@ void EarClipper::classify(std::uint32_t entry) {
   do {
     alive_[v] = 1;
     ++remaining_;
-    if (!(b.turn(v) > 0)) {
-      reflex_[v] = 1;
-      scratch_.push_back(v);
-    }
     v = b.next[v];
   } while (v != entry);
+  for (std::uint32_t u = 0; u < b.size(); ++u)
+    if (alive_[u]) dissolve_spikes(u);
+  for (std::uint32_t u = 0; u < b.size(); ++u) {
+    if (alive_[u] && !(b.turn(u) > 0)) {
+      reflex_[u] = 1;
+      scratch_.push_back(u);
+    }
+  }
   grid_.build(b, scratch_);
+}
+
+void EarClipper::remove(std::uint32_t v) {
+  b_->unlink(v);
+  alive_[v] = 0;
+  reflex_[v] = 0;
+  --remaining_;
+}
+
+/// A node whose neighbours coincide is the tip of a zero-area spike: the remnant of a lobe of
+/// a self-touching ring, or an antenna in the input. It and its successor (which duplicates
+/// its predecessor) leave without a triangle. Returns a live node where the change happened.
+std::uint32_t EarClipper::dissolve_spikes(std::uint32_t v) {
+  Boundary& b = *b_;
+  while (remaining_ >= 4 && b.pos[b.prev[v]] == b.pos[b.next[v]]) {
+    const std::uint32_t p = b.prev[v], n = b.next[v];
+    remove(v);
+    remove(n);
+    v = p;
+  }
+  return v;
+}
+
+/// After a clip next to v: dissolve spikes, refresh the convexity and ear status around v.
+std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
+  if (!alive_[v]) return UINT32_MAX;
+  const std::uint32_t u = dissolve_spikes(v);
+  if (u != v) {
+    for (std::uint32_t w : {b_->prev[u], u, b_->next[u]}) {
+      update_neighbour(w);
+      if (queue) offer(w);
+    }
+    return u;
+  }
+  update_neighbour(v);
+  if (queue) offer(v);
+  return v;
 }
 
 /// Whether reflex node q spoils the ear (p, v, n). Strictly inside always does; on the
@@ -103,12 +144,9 @@ double EarClipper::quality(std::uint32_t v) const {
 }
 
 void EarClipper::clip(std::uint32_t v) {
-  Boundary& b = *b_;
+  const Boundary& b = *b_;
   out_->push_back({b.vertex[b.prev[v]], b.vertex[v], b.vertex[b.next[v]]});
-  b.unlink(v);
-  alive_[v] = 0;
-  reflex_[v] = 0;
-  --remaining_;
+  remove(v);
 }
 
 /// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
@@ -145,20 +183,17 @@ void EarClipper::clip_top() {
   while (remaining_ > 3) {
     std::uint32_t v;
     if (!pop(v)) {
-      if (!fall_back(last)) break;
+      if (!fall_back(live(last))) break;
       last = touched_;
       for (std::uint32_t u : {b_->prev[last], last, b_->next[last]}) update_neighbour(u), offer(u);
       continue;
     }
     const std::uint32_t p = b_->prev[v], n = b_->next[v];
     clip(v);
-    update_neighbour(p);
-    update_neighbour(n);
-    offer(p);
-    offer(n);
-    last = p;
+    const std::uint32_t p_left = settle(p, true), n_left = settle(n, true);
+    last = n_left != UINT32_MAX ? n_left : p_left;
   }
-  finish(last);
+  if (remaining_ == 3) finish(live(last));
 }
 
 /// Without a queue: walk the boundary, clip every ear met, and step back after a clip, since
@@ -167,22 +202,22 @@ void EarClipper::clip_fast(std::uint32_t entry) {
   std::uint32_t v = entry;
   std::size_t misses = 0;
   while (remaining_ > 3) {
+    v = live(v);
     if (is_ear(v)) {
       const std::uint32_t p = b_->prev[v], n = b_->next[v];
       clip(v);
-      update_neighbour(p);
-      update_neighbour(n);
-      v = p;
+      const std::uint32_t p_left = settle(p, false), n_left = settle(n, false);
+      v = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
       misses = 0;
       continue;
     }
     v = b_->next[v];
     if (++misses <= remaining_) continue;
-    if (!fall_back(v)) break;
+    if (!fall_back(live(v))) break;
     v = touched_;
     misses = 0;
   }
-  finish(v);
+  if (remaining_ == 3) finish(live(v));
 }
 
 bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {

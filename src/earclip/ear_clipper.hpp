@@ -42,6 +42,14 @@ class EarClipper {
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
+  void remove(std::uint32_t v);
+  std::uint32_t dissolve_spikes(std::uint32_t v);
+  std::uint32_t settle(std::uint32_t v, bool queue);
+  /// A live node at or after v: removed nodes keep pointing at nodes live when they left.
+  std::uint32_t live(std::uint32_t v) const {
+    while (!alive_[v]) v = b_->next[v];
+    return v;
+  }
   void offer(std::uint32_t v);
   bool pop(std::uint32_t& v);
   bool fall_back(std::uint32_t near);

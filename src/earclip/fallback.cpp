@@ -29,12 +29,8 @@ bool EarClipper::fall_back(std::uint32_t near) {
     if (b.pos[p] == b.pos[n] || b.pos[v] == b.pos[n]) {
       const std::uint32_t gone = b.pos[v] == b.pos[n] ? n : v;
       const std::uint32_t also = gone == v ? n : UINT32_MAX;
-      for (std::uint32_t u : {gone, also}) {
-        if (u == UINT32_MAX || remaining_ <= 2) continue;
-        b.unlink(u);
-        alive_[u] = reflex_[u] = 0;
-        --remaining_;
-      }
+      for (std::uint32_t u : {gone, also})
+        if (u != UINT32_MAX && remaining_ > 2) remove(u);
       touched_ = p;
       return remaining_ >= 3;
     }
@@ -57,9 +53,7 @@ bool EarClipper::fall_back(std::uint32_t near) {
     clip(chosen);
   } else {
     touched_ = b.prev[near];
-    b.unlink(near);
-    alive_[near] = reflex_[near] = 0;
-    --remaining_;
+    remove(near);
   }
   return remaining_ >= 3;
 }
