@@ -65,9 +65,8 @@ concept point_like = requires(const P& p) {
 /// `std::span<const std::vector<std::array<float,2>>>`, and so on.
 template <class R>
 concept ring_range = std::ranges::forward_range<R> &&
-                     std::ranges::forward_range<std::ranges::range_reference_t<R>> &&
-                     point_like<std::remove_cvref_t<
-                         std::ranges::range_reference_t<std::ranges::range_reference_t<R>>>>;
+    std::ranges::forward_range<std::ranges::range_reference_t<R>> && point_like<
+        std::remove_cvref_t<std::ranges::range_reference_t<std::ranges::range_reference_t<R>>>>;
 
 /// Coordinates must lie in this magnitude range (or be zero): there the exact predicates can
 /// neither overflow nor underflow. 2^200 and 2^-200.
@@ -84,14 +83,14 @@ enum class Status : std::uint8_t {
 
 /// What a diagnostic is about.
 enum class Issue : std::uint8_t {
-  empty_input,             ///< no rings at all (error)
-  non_finite_coordinate,   ///< NaN or infinity (error)
-  coordinate_out_of_range, ///< |c| > 2^200 or 0 < |c| < 2^-200 (error)
-  outer_ring_too_small,    ///< outer ring has fewer than 3 distinct points or zero area (error)
-  hole_dropped_too_small,  ///< a hole with fewer than 3 distinct points was ignored (warning)
-  hole_dropped_zero_area,  ///< a hole with zero area was ignored (warning)
-  index_overflow,          ///< more vertices than the index type can number (error)
-  not_simple,              ///< rings cross or overlap; result is best effort (warning)
+  empty_input,              ///< no rings at all (error)
+  non_finite_coordinate,    ///< NaN or infinity (error)
+  coordinate_out_of_range,  ///< |c| > 2^200 or 0 < |c| < 2^-200 (error)
+  outer_ring_too_small,     ///< outer ring has fewer than 3 distinct points or zero area (error)
+  hole_dropped_too_small,   ///< a hole with fewer than 3 distinct points was ignored (warning)
+  hole_dropped_zero_area,   ///< a hole with zero area was ignored (warning)
+  index_overflow,           ///< more vertices than the index type can number (error)
+  not_simple,               ///< rings cross or overlap; result is best effort (warning)
 };
 
 /// One finding about the input, naming the ring (0 = outer) and the vertex index within that ring

@@ -7,9 +7,10 @@
 // Pre-conditions: none beyond "a range of rings"; every input is accepted and answered with a
 // status. Post-conditions for Status::ok: result.triangles is a triangulation of the polygon
 // (outer ring minus holes) using only input vertices, numbered ring after ring in input order
-// (ring 0's first point is 0), counterclockwise, with n + 2h - 2 triangles where n counts the
-// vertices left after dropping repeated consecutive points and the closing point, and h the holes
-// kept. See README.md "Pre- and post-conditions" for the full contract.
+// (ring 0's first point is 0), counterclockwise, with n + 2h - 2 - 2m triangles where n counts the
+// vertices left after dropping repeated consecutive points and the closing point, h the holes
+// kept, and m the kept vertices that repeat an already used point (holes or rings touching at a
+// vertex). See README.md "Pre- and post-conditions" for the full contract.
 #pragma once
 
 #include <array>

@@ -146,12 +146,15 @@ std::string test_name(const ::testing::TestParamInfo<CorpusFile>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_CORPUS", {"earcut", "."})),
+                         ::testing::ValuesIn(list_corpus("PEAR_CORPUS",
+                                                         {"earcut", "countries", "glyphs"})),
                          test_name);
 INSTANTIATE_TEST_SUITE_P(Shared, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS",
-                                                         {"earcut", "countries", "glyphs",
-                                                          "synthetic", "coast"})),
+                         ::testing::ValuesIn(list_corpus(
+                             "PEAR_SHARED_CORPUS", {"earcut", "countries", "glyphs", "synthetic"})),
+                         test_name);
+INSTANTIATE_TEST_SUITE_P(SharedCoast, Corpus,
+                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"coast"})),
                          test_name);
 INSTANTIATE_TEST_SUITE_P(SharedCounties, Corpus,
                          ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"}, 10)),

@@ -1,0 +1,11 @@
+#!/usr/bin/env bash
+# The main job: build pear (library + CLI), triangulate a bundled real polygon (Mozambique,
+# Natural Earth 1:10m, with its lakes), print the stats and write a picture to pear-demo.svg.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+scripts/setup.sh minimal
+[[ -f build-release/build.ninja ]] ||
+  meson setup build-release --buildtype=release -Dtests=disabled -Dbench=disabled -Dfuzz=disabled >/dev/null
+ninja -C build-release tools/pear/pear >/dev/null
+./build-release/tools/pear/pear triangulate corpus/countries/mozambique_000.json --stats --validate -o pear-demo.svg
+echo "picture: $(pwd)/pear-demo.svg"

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what pear's build, tests and tools need on Debian 12 (as root, or through sudo).
+# Usage: scripts/setup.sh [minimal]   minimal: only what the library and the CLI need.
+set -euo pipefail
+packages=(meson ninja-build g++ pkg-config zlib1g-dev python3)
+if [[ "${1:-}" != minimal ]]; then
+  packages+=(libgtest-dev libgmp-dev libbenchmark-dev libcgal-dev libgeos-dev libtbb-dev
+             clang clang-format)
+fi
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+[[ ${#missing[@]} -eq 0 ]] && exit 0
+sudo=""
+[[ "$(id -u)" -ne 0 ]] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -qq
+$sudo apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Builds pear with its tests and runs them all (meson test). The tests that read ../shared/corpus
+# run when it is there and skip themselves otherwise.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+scripts/setup.sh
+[[ -f build-test/build.ninja ]] ||
+  meson setup build-test --buildtype=release -Dtests=enabled -Dbench=disabled -Dfuzz=disabled >/dev/null
+ninja -C build-test -j"${JOBS:-2}"
+meson test -C build-test --print-errorlogs --num-processes "${JOBS:-2}"
