@@ -14,7 +14,7 @@
 namespace {
 
 // ThreadSanitizer slows atomics down a lot: smaller sizes keep the suite short there.
-constexpr std::size_t scale_down = pear::detail::thread_sanitizer ? 10 : 1;
+constexpr std::size_t scale_down = pear::detail::thread_sanitizer ? 4 : 1;
 
 TEST(WorkStealingDeque, OwnerPopsLastInFirstOutAcrossGrowth) {
   pear::WorkStealingDeque<int> deque(2);

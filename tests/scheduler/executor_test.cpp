@@ -37,7 +37,7 @@ class ExecutorSizes : public ::testing::TestWithParam<std::size_t> {};
 
 TEST_P(ExecutorSizes, SpawnedFibonacciMatchesSerial) {
   pear::Executor executor(GetParam());
-  const int n = under_tsan ? 16 : 24;
+  const int n = under_tsan ? 18 : 24;
   std::uint64_t result = 0;
   pear::TaskGroup outer(executor);
   outer.run([&] { result = spawned_fib(n); });
@@ -47,7 +47,7 @@ TEST_P(ExecutorSizes, SpawnedFibonacciMatchesSerial) {
 
 TEST_P(ExecutorSizes, ParallelForWritesEveryIndexOnce) {
   pear::Executor executor(GetParam());
-  const int n = under_tsan ? 20000 : 1000000;
+  const int n = under_tsan ? 100000 : 1000000;
   std::vector<std::atomic<int>> hits(n);
   pear::parallel_for(executor, 0, n, 100,
                      [&](int i) { hits[i].fetch_add(1, std::memory_order_relaxed); });

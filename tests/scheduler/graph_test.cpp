@@ -75,7 +75,7 @@ struct DagCase {
 class RandomDag : public ::testing::TestWithParam<DagCase> {};
 
 TEST_P(RandomDag, EveryTaskRunsOnceAfterItsPredecessors) {
-  const std::size_t n = std::max<std::size_t>(1, GetParam().tasks / (under_tsan ? 20 : 1));
+  const std::size_t n = std::max<std::size_t>(1, GetParam().tasks / (under_tsan ? 5 : 1));
   pear::Executor executor(GetParam().concurrency);
   pear::TaskGraph graph;
   Recorder recorder(n);
