@@ -5,75 +5,48 @@
 
 namespace pear::detail {
 
-namespace {
-
-// Appends v unless it is zero, without a branch: zeros are rare and unpredictable, and a
-// mispredicted branch costs more than the store. The store happens either way, so each call must
-// have a slot of its own in h.
-inline void append_nonzero(double v, double* h, std::size_t& count) {
-  h[count] = v;
-  count += static_cast<std::size_t>(v != 0.0);
-}
-
-}  // namespace
-
 std::size_t expansion_sum(std::span<const double> e, std::span<const double> f, double* h) {
-  // Merge e and f into one sequence of increasing magnitude, carrying a running sum q through it
-  // with two-sums; the roundoff of each step is an output component, so at most e.size() +
-  // f.size() are written whatever the values (NaN included). Which input holds the next smaller
-  // component is a coin toss, so the merge selects by indexing instead of branching.
+  // Merge e and f into one sequence g of increasing magnitude, then carry a running sum Q through
+  // g with two-sums; the roundoff of each step is an output component.
   std::size_t i = 0;
   std::size_t j = 0;
-  auto take_smaller = [&]() {
-    const double candidates[2] = {f[j], e[i]};
-    const bool take_e = std::fabs(e[i]) < std::fabs(f[j]);
-    i += static_cast<std::size_t>(take_e);
-    j += static_cast<std::size_t>(!take_e);
-    return candidates[take_e];
+  auto next = [&]() {
+    if (j == f.size() || (i < e.size() && std::fabs(e[i]) < std::fabs(f[j]))) return e[i++];
+    return f[j++];
   };
-  if (e.empty() && f.empty()) return 0;
-  double q = e.empty() ? f[j++] : f.empty() ? e[i++] : take_smaller();
+  const std::size_t total = e.size() + f.size();
+  if (total == 0) return 0;
+  double q = next();
   std::size_t count = 0;
-  double roundoff;
-  while (i < e.size() && j < f.size()) {
-    two_sum(q, take_smaller(), q, roundoff);
-    append_nonzero(roundoff, h, count);
+  for (std::size_t k = 1; k < total; ++k) {
+    double roundoff;
+    two_sum(q, next(), q, roundoff);
+    if (roundoff != 0.0) h[count++] = roundoff;
   }
-  for (; i < e.size(); ++i) {
-    two_sum(q, e[i], q, roundoff);
-    append_nonzero(roundoff, h, count);
-  }
-  for (; j < f.size(); ++j) {
-    two_sum(q, f[j], q, roundoff);
-    append_nonzero(roundoff, h, count);
-  }
-  append_nonzero(q, h, count);
+  if (q != 0.0) h[count++] = q;
   return count;
 }
 
 std::size_t scale_expansion(std::span<const double> e, double b, double* h) {
   if (e.empty()) return 0;
-  double b_high;
-  double b_low;
-  split(b, b_high, b_low);  // once, not in every product
   std::size_t count = 0;
   double q;
   double roundoff;
-  two_product_presplit(e[0], b, b_high, b_low, q, roundoff);
-  append_nonzero(roundoff, h, count);
+  two_product(e[0], b, q, roundoff);
+  if (roundoff != 0.0) h[count++] = roundoff;
   for (std::size_t i = 1; i < e.size(); ++i) {
     double product_high;
     double product_low;
-    two_product_presplit(e[i], b, b_high, b_low, product_high, product_low);
+    two_product(e[i], b, product_high, product_low);
     double partial;
     two_sum(q, product_low, partial, roundoff);
-    append_nonzero(roundoff, h, count);
+    if (roundoff != 0.0) h[count++] = roundoff;
     // The paper proves |product_high| >= |partial| here, so Fast-Two-Sum would do; two_sum gives
     // the same result without relying on it.
     two_sum(product_high, partial, q, roundoff);
-    append_nonzero(roundoff, h, count);
+    if (roundoff != 0.0) h[count++] = roundoff;
   }
-  append_nonzero(q, h, count);
+  if (q != 0.0) h[count++] = q;
   return count;
 }
 

@@ -55,23 +55,16 @@ inline void split(double a, double& high, double& low) {
   low = a - high;
 }
 
-// a * b = product + error exactly, with b already split into b_high + b_low.
-inline void two_product_presplit(double a, double b, double b_high, double b_low, double& product,
-                                 double& error) {
+// a * b = product + error exactly, without FMA (Dekker's product, paper Theorem 18).
+inline void two_product(double a, double b, double& product, double& error) {
   product = a * b;
-  double a_high, a_low;
+  double a_high, a_low, b_high, b_low;
   split(a, a_high, a_low);
+  split(b, b_high, b_low);
   const double error1 = product - a_high * b_high;
   const double error2 = error1 - a_low * b_high;
   const double error3 = error2 - a_high * b_low;
   error = a_low * b_low - error3;
-}
-
-// a * b = product + error exactly, without FMA (Dekker's product, paper Theorem 18).
-inline void two_product(double a, double b, double& product, double& error) {
-  double b_high, b_low;
-  split(b, b_high, b_low);
-  two_product_presplit(a, b, b_high, b_low, product, error);
 }
 
 // A fixed-capacity expansion; `size` components are valid, smallest magnitude first.
