@@ -178,16 +178,22 @@ class PolyReader {
     const std::size_t r = rings_.size();
     std::vector<detail::Box> boxes(r);
     for (std::size_t i = 0; i < r; ++i) boxes[i] = detail::bounding_box(rings_[i]);
+    const detail::BoxGrid grid(boxes);
     std::vector<std::vector<std::size_t>> containers(r);
     std::vector<std::size_t> depth(r, 0);
     for (std::size_t i = 0; i < r; ++i) {
-      const Point& p = rings_[i].front();
-      for (std::size_t k = 0; k < r; ++k)
+      // The middle of an edge: rings that touch share vertices, rarely edge midpoints.
+      const Ring& ring = rings_[i];
+      const Point p = ring.size() < 2 ? ring.front()
+                                      : Point{ring[0].x + (ring[1].x - ring[0].x) / 2,
+                                              ring[0].y + (ring[1].y - ring[0].y) / 2};
+      grid.candidates(p, [&](std::size_t k) {
         if (k != i && boxes[k].contains(p) && detail::inside(rings_[k], p))
           containers[i].push_back(k);
+      });
       depth[i] = containers[i].size();
     }
-    check_hole_points(boxes);
+    check_hole_points(grid);
     std::vector<Polygon> polygons;
     std::vector<std::size_t> polygon_of(r, no_vertex);
     for (std::size_t i = 0; i < r; ++i) {
@@ -197,17 +203,23 @@ class PolyReader {
     }
     for (std::size_t i = 0; i < r; ++i) {
       if (depth[i] % 2 == 0) continue;
-      std::size_t parent = containers[i].front();  // the innermost container is the deepest
+      // The innermost container is the deepest one that starts a polygon. Overlapping rings
+      // can make the depths disagree; a ring left without one starts its own polygon.
+      std::size_t parent = no_vertex;
       for (const std::size_t k : containers[i])
-        if (depth[k] > depth[parent]) parent = k;
-      polygons[polygon_of[parent]].push_back(rings_[i]);
+        if (depth[k] % 2 == 0 && (parent == no_vertex || depth[k] > depth[parent])) parent = k;
+      if (parent == no_vertex) {
+        polygons.push_back({rings_[i]});
+      } else {
+        polygons[polygon_of[parent]].push_back(rings_[i]);
+      }
     }
     return polygons;
   }
 
-  void check_hole_points(const std::vector<detail::Box>& boxes) {
+  void check_hole_points(const detail::BoxGrid& grid) {
     for (std::size_t h = 0; h < hole_points_.size(); ++h) {
-      if (detail::containing_count(rings_, boxes, hole_points_[h]) % 2 == 1)
+      if (detail::containing_count(rings_, grid, hole_points_[h]) % 2 == 1)
         s_.fail(hole_at_[h], "expected hole point " + std::to_string(h + base_) +
                                  " inside a hole or outside every ring, but it lies in the "
                                  "polygon's filled area (rings nest even-odd)");

@@ -1,6 +1,7 @@
 #include "rings.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace pear::io::detail {
 
@@ -25,11 +26,60 @@ bool inside(const Ring& ring, const Point& p) {
   return in;
 }
 
-std::size_t containing_count(std::span<const Ring> rings, std::span<const Box> boxes,
-                             const Point& p) {
+BoxGrid::BoxGrid(std::span<const Box> boxes) {
+  if (boxes.empty()) return;
+  bounds_ = boxes.front();
+  for (const Box& b : boxes) {
+    bounds_.min_x = std::min(bounds_.min_x, b.min_x),
+    bounds_.max_x = std::max(bounds_.max_x, b.max_x);
+    bounds_.min_y = std::min(bounds_.min_y, b.min_y),
+    bounds_.max_y = std::max(bounds_.max_y, b.max_y);
+  }
+  side_ = static_cast<std::size_t>(std::ceil(std::sqrt(static_cast<double>(boxes.size()))));
+  const std::size_t cell_count = side_ * side_;
+  std::vector<std::size_t> counts(cell_count + 1, 0);
+  auto each_cell = [&](const Box& b, auto visit) {
+    for (std::size_t r = row(b.min_y); r <= row(b.max_y); ++r)
+      for (std::size_t c = column(b.min_x); c <= column(b.max_x); ++c) visit(r * side_ + c);
+  };
+  auto is_large = [&](const Box& b) {
+    return (row(b.max_y) - row(b.min_y) + 1) * (column(b.max_x) - column(b.min_x) + 1) >
+           std::max<std::size_t>(16, cell_count / 8);
+  };
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    if (is_large(boxes[i])) {
+      large_.push_back(i);
+      continue;
+    }
+    each_cell(boxes[i], [&](std::size_t cell) { ++counts[cell + 1]; });
+  }
+  for (std::size_t c = 0; c < cell_count; ++c) counts[c + 1] += counts[c];
+  starts_ = counts;
+  cells_.resize(counts[cell_count]);
+  for (std::size_t i = 0; i < boxes.size(); ++i)
+    if (!is_large(boxes[i]))
+      each_cell(boxes[i], [&](std::size_t cell) { cells_[counts[cell]++] = i; });
+}
+
+std::size_t BoxGrid::column(double x) const {
+  const double width = bounds_.max_x - bounds_.min_x;
+  if (!(width > 0)) return 0;
+  const double f = (x - bounds_.min_x) / width * static_cast<double>(side_);
+  return std::min(side_ - 1, static_cast<std::size_t>(std::max(0.0, f)));
+}
+
+std::size_t BoxGrid::row(double y) const {
+  const double height = bounds_.max_y - bounds_.min_y;
+  if (!(height > 0)) return 0;
+  const double f = (y - bounds_.min_y) / height * static_cast<double>(side_);
+  return std::min(side_ - 1, static_cast<std::size_t>(std::max(0.0, f)));
+}
+
+std::size_t containing_count(std::span<const Ring> rings, const BoxGrid& grid, const Point& p) {
   std::size_t count = 0;
-  for (std::size_t r = 0; r < rings.size(); ++r)
-    if (boxes[r].contains(p) && inside(rings[r], p)) ++count;
+  grid.candidates(p, [&](std::size_t r) {
+    if (inside(rings[r], p)) ++count;
+  });
   return count;
 }
 
@@ -62,15 +112,21 @@ double scan_height(const Ring& ring) {
 }
 }  // namespace
 
-bool interior_point(const Ring& hole, std::span<const Ring> others, Point& point) {
+bool interior_point(const Ring& hole, std::span<const Ring> others, std::span<const Box> boxes,
+                    Point& point) {
   if (hole.size() < 3) return false;
   const double y = scan_height(hole);
   std::vector<double> own;
   crossings(hole, y, own);
   std::sort(own.begin(), own.end());
   std::vector<double> islands;
-  for (const Ring& other : others)
-    if (other.size() >= 3 && &other != &hole) crossings(other, y, islands);
+  const Box hole_box = bounding_box(hole);
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    const Box& b = boxes[k];
+    const bool overlaps =
+        b.min_y <= y && y <= b.max_y && b.min_x <= hole_box.max_x && hole_box.min_x <= b.max_x;
+    if (overlaps && others[k].size() >= 3 && &others[k] != &hole) crossings(others[k], y, islands);
+  }
   std::sort(islands.begin(), islands.end());
   double best_width = 0;
   for (std::size_t k = 0; k + 1 < own.size(); k += 2) {  // [own[k], own[k+1]] is inside the hole

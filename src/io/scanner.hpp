@@ -68,7 +68,7 @@ class Scanner {
   std::size_t scan_number(NumberSyntax syntax) const;
 
   std::string_view text_;
-  std::string_view name_;
+  std::string name_;  // owned: callers may pass a temporary name
 };
 
 /// Drops a ring's closing point when it repeats the first; checks the ring has at least 3 points

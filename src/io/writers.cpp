@@ -203,10 +203,12 @@ void write_poly(std::ostream& stream, std::span<const Polygon> polygons) {
       rings.push_back(polygon[r]);
     }
   }
+  std::vector<detail::Box> boxes;
+  for (const Ring& ring : rings) boxes.push_back(detail::bounding_box(ring));
   std::vector<Point> hole_points;
   for (const std::size_t h : holes) {
     Point point;
-    if (!detail::interior_point(rings[h], rings, point))
+    if (!detail::interior_point(rings[h], rings, boxes, point))
       throw std::invalid_argument("write_poly: ring " + std::to_string(h) +
                                   " has no interior point for its hole marker (zero area?)");
     hole_points.push_back(point);

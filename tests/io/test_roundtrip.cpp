@@ -6,6 +6,8 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <filesystem>
 #include <random>
 #include <sstream>
 
@@ -149,6 +151,51 @@ TEST(Formats, WktAndPolyReadLikeGeoJson) {
 1 15 5 1.5 -1
 )");
   expect_same_polygons(poly, json);
+}
+
+// Valid real polygons (Natural Earth countries and font glyphs, many holes) come back bit
+// identical through every polygon format.
+TEST(RoundTrip, BundledCorpusThroughEveryFormat) {
+  const char* corpus = std::getenv("PEAR_CORPUS");
+  if (corpus == nullptr) GTEST_SKIP() << "PEAR_CORPUS not set";
+  std::size_t files = 0;
+  for (const char* dir : {"countries", "glyphs"}) {
+    for (const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(corpus) / dir)) {
+      if (entry.path().extension() != ".json") continue;
+      SCOPED_TRACE(entry.path().string());
+      const auto polygons = io::read_file(entry.path());
+      std::ostringstream json, wkt, poly;
+      io::write_geojson_polygons(json, polygons);
+      io::write_wkt(wkt, polygons);
+      io::write_poly(poly, polygons);
+      expect_same_polygons(io::read_geojson(json.str()), polygons);
+      expect_same_polygons(io::read_wkt(wkt.str()), polygons);
+      expect_same_polygons(io::read_poly(poly.str()), polygons);
+      ++files;
+    }
+  }
+  EXPECT_EQ(files, 7u);
+}
+
+// Regression: a hole whose first vertex lies on the outer ring, and a ring nested only in a ring
+// that crosses out of its own container, made the .poly nesting index a polygon that did not
+// exist (a crash on earcut's water-huge3 written as .poly).
+TEST(PolyReader, TouchingAndCrossingRingsNestWithoutCrashing) {
+  const auto touching = io::read_poly(
+      "7 2 0 0\n0 0 0\n1 10 0\n2 10 10\n3 0 10\n4 0 5\n5 3 4\n6 3 6\n"
+      "7 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 4\n0\n");
+  ASSERT_EQ(touching.size(), 1u);
+  EXPECT_EQ(touching[0].size(), 2u);
+  // Z = [0,10]^2; Y = (2,8),(2,2),(20,2),(20,8) starts inside Z and crosses out; X lies in Y
+  // outside Z. Y is a hole of Z; X, inside only a hole, starts a polygon of its own.
+  const auto crossing = io::read_poly(
+      "11 2 0 0\n0 0 0\n1 10 0\n2 10 10\n3 0 10\n4 2 8\n5 2 2\n6 20 2\n7 20 8\n"
+      "8 14 4\n9 16 4\n10 15 6\n11 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n4 4 5\n5 5 6\n6 6 7\n"
+      "7 7 4\n8 8 9\n9 9 10\n10 10 8\n0\n");
+  ASSERT_EQ(crossing.size(), 2u);
+  EXPECT_EQ(crossing[0].size(), 2u);
+  EXPECT_EQ(crossing[1], (Polygon{{{14, 4}, {16, 4}, {15, 6}}}));
 }
 
 TEST(RoundTrip, TriangleMeshesAsObjNodeEleAndGeoJson) {
