@@ -48,8 +48,8 @@ int run_stats(std::span<const std::string_view> arguments) {
   Triangulator triangulator;
   std::size_t polygons_total = 0, failures = 0;
   if (!json)
-    std::printf("%-32s %5s %9s %9s %9s %9s %9s %9s %11s\n", "file", "index", "vertices", "holes",
-                "convex", "reflex", "ears", "ears/vert", "ears/convex");
+    std::printf("%9s %6s %9s %9s %9s %9s %11s  %s\n", "vertices", "holes", "convex", "reflex",
+                "ears", "ears/vert", "ears/convex", "file:polygon");
   for (const std::string& file : files) {
     try {
       const std::vector<Polygon> polygons = read_input(file, read);
@@ -64,15 +64,16 @@ int run_stats(std::span<const std::string_view> arguments) {
           line.add("convex_ear_fraction", fraction(e.ears, e.convex));
           std::printf("%s\n", line.str().c_str());
         } else {
-          std::printf("%-32s %5zu %9zu %9zu %9zu %9zu %9zu %9.3f %11.3f\n", file.c_str(), i,
-                      e.vertices, holes, e.convex, e.reflex, e.ears, fraction(e.ears, e.vertices),
-                      fraction(e.ears, e.convex));
+          std::printf("%9zu %6zu %9zu %9zu %9zu %9.3f %11.3f  %s:%zu\n", e.vertices, holes,
+                      e.convex, e.reflex, e.ears, fraction(e.ears, e.vertices),
+                      fraction(e.ears, e.convex), file.c_str(), i);
         }
       }
     } catch (const io::ParseError& e) {
       progress.message(e.what());
       ++failures;
     }
+    std::fflush(stdout);
     progress.advance();
   }
   progress.summary(polygons_total, failures);
