@@ -86,9 +86,9 @@ class ThreadScope {
   bool entered_ = false;
 };
 
-void spawn(ExecutorImpl& executor, Job* job);
+void spawn(ExecutorImpl& executor, Job* job) noexcept;
 void help_until(ExecutorImpl& executor, WaitCounter& counter);
-void wake_waiters(ExecutorImpl& executor);
+void wake_waiters(ExecutorImpl& executor) noexcept;
 ExecutorImpl& impl_of(Executor& executor) noexcept;
 
 template <class F>

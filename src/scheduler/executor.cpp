@@ -131,7 +131,7 @@ Slot* ExecutorImpl::own_slot() const noexcept {
   return context.executor == this ? context.slot : nullptr;
 }
 
-void ExecutorImpl::push(Job* job) {
+void ExecutorImpl::push(Job* job) noexcept {
   if (Slot* own = own_slot()) {
     own->deque.push(job);
     return;
@@ -141,7 +141,7 @@ void ExecutorImpl::push(Job* job) {
   shared_count_.fetch_add(1, std::memory_order_seq_cst);
 }
 
-void ExecutorImpl::spawn(Job* job) {
+void ExecutorImpl::spawn(Job* job) noexcept {
   push(job);
   gate.notify(1);
 }
@@ -221,13 +221,13 @@ ThreadScope::~ThreadScope() {
   context = {saved_executor_, static_cast<Slot*>(saved_slot_)};
 }
 
-void spawn(ExecutorImpl& executor, Job* job) {
+void spawn(ExecutorImpl& executor, Job* job) noexcept {
   executor.spawn(job);
 }
 void help_until(ExecutorImpl& executor, WaitCounter& counter) {
   executor.help_until(counter);
 }
-void wake_waiters(ExecutorImpl& executor) {
+void wake_waiters(ExecutorImpl& executor) noexcept {
   executor.gate.notify_all();
 }
 ExecutorImpl& impl_of(Executor& executor) noexcept {

@@ -50,7 +50,7 @@ class IdleGate {
     waiter.wake.wait(lock, [&] { return waiter.signalled; });
   }
   /// Wakes up to count sleepers (cheap when none sleeps: a fence and a load).
-  void notify(std::size_t count) {
+  void notify(std::size_t count) noexcept {
     fence(std::memory_order_seq_cst);  // the published work before our load of waiters
     if (waiters_.load(order(std::memory_order_relaxed)) == 0) return;
     std::lock_guard lock(mutex_);
@@ -62,7 +62,7 @@ class IdleGate {
       waiter->wake.notify_one();  // under the mutex: the waiter may be gone right after
     }
   }
-  void notify_all() { notify(static_cast<std::size_t>(-1)); }
+  void notify_all() noexcept { notify(static_cast<std::size_t>(-1)); }
 
  private:
   alignas(64) std::atomic<std::uint32_t> waiters_{0};
@@ -88,10 +88,11 @@ class ExecutorImpl {
   void shut_down();
 
   /// Pushes onto this thread's deque (the shared queue without one); the caller then wakes
-  /// sleepers with gate.notify(count), once for a batch.
-  void push(Job* job);
+  /// sleepers with gate.notify(count), once for a batch. A job that cannot be queued (out of
+  /// memory) would leave its group or run waiting forever: that terminates instead.
+  void push(Job* job) noexcept;
   /// push, then wake one sleeper.
-  void spawn(Job* job);
+  void spawn(Job* job) noexcept;
   void help_until(WaitCounter& counter);
 
   Slot* claim_external_slot() noexcept;
