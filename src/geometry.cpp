@@ -6,24 +6,36 @@ namespace pear {
 
 const char* to_string(Status status) {
   switch (status) {
-    case Status::ok: return "ok";
-    case Status::not_simple: return "not_simple";
-    case Status::invalid_input: return "invalid_input";
-    case Status::index_overflow: return "index_overflow";
+    case Status::ok:
+      return "ok";
+    case Status::not_simple:
+      return "not_simple";
+    case Status::invalid_input:
+      return "invalid_input";
+    case Status::index_overflow:
+      return "index_overflow";
   }
   return "unknown";
 }
 
 const char* to_string(Issue issue) {
   switch (issue) {
-    case Issue::empty_input: return "empty_input";
-    case Issue::non_finite_coordinate: return "non_finite_coordinate";
-    case Issue::coordinate_out_of_range: return "coordinate_out_of_range";
-    case Issue::outer_ring_too_small: return "outer_ring_too_small";
-    case Issue::hole_dropped_too_small: return "hole_dropped_too_small";
-    case Issue::hole_dropped_zero_area: return "hole_dropped_zero_area";
-    case Issue::index_overflow: return "index_overflow";
-    case Issue::not_simple: return "not_simple";
+    case Issue::empty_input:
+      return "empty_input";
+    case Issue::non_finite_coordinate:
+      return "non_finite_coordinate";
+    case Issue::coordinate_out_of_range:
+      return "coordinate_out_of_range";
+    case Issue::outer_ring_too_small:
+      return "outer_ring_too_small";
+    case Issue::hole_dropped_too_small:
+      return "hole_dropped_too_small";
+    case Issue::hole_dropped_zero_area:
+      return "hole_dropped_zero_area";
+    case Issue::index_overflow:
+      return "index_overflow";
+    case Issue::not_simple:
+      return "not_simple";
   }
   return "unknown";
 }
@@ -31,15 +43,20 @@ const char* to_string(Issue issue) {
 namespace {
 const char* explain(Issue issue) {
   switch (issue) {
-    case Issue::empty_input: return "the polygon has no rings";
-    case Issue::non_finite_coordinate: return "coordinate is NaN or infinite";
+    case Issue::empty_input:
+      return "the polygon has no rings";
+    case Issue::non_finite_coordinate:
+      return "coordinate is NaN or infinite";
     case Issue::coordinate_out_of_range:
       return "coordinate magnitude is outside [2^-200, 2^200] (and not zero)";
     case Issue::outer_ring_too_small:
       return "outer ring has fewer than 3 distinct points or zero area";
-    case Issue::hole_dropped_too_small: return "hole has fewer than 3 distinct points; ignored";
-    case Issue::hole_dropped_zero_area: return "hole has zero area; ignored";
-    case Issue::index_overflow: return "vertex count does not fit the index type";
+    case Issue::hole_dropped_too_small:
+      return "hole has fewer than 3 distinct points; ignored";
+    case Issue::hole_dropped_zero_area:
+      return "hole has zero area; ignored";
+    case Issue::index_overflow:
+      return "vertex count does not fit the index type";
     case Issue::not_simple:
       return "rings cross or overlap near here; the triangulation is a best effort";
   }
