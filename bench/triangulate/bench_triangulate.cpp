@@ -1,0 +1,160 @@
+// Triangulation time, memory and quality: pear against CGAL and GEOS in one binary, on the
+// synthetic families and the shared corpus. See run.sh and table.py.
+//
+// Each benchmark is one input and one triangulator. The input is converted to the
+// triangulator's own form untimed. Once per benchmark (not per repetition) an untimed run
+// counts peak heap bytes, and its triangles are checked by pear::validate and measured by
+// pear::quality. Then the timed runs (CPU time: every triangulator here is single-threaded,
+// which is steadier on a shared machine).
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "inputs.hpp"
+#include "memory.hpp"
+#include "pear/pear.hpp"
+#include "pear/quality.hpp"
+#include "pear/validate.hpp"
+#include "peers.hpp"
+
+namespace bench {
+namespace {
+
+/// The polygon of the last input used: benchmarks of one input run one after another, so each
+/// input is loaded once without keeping all of them in memory.
+struct LoadedInput {
+  std::string name;
+  pear::Polygon polygon;
+  pear::detail::FlatPolygon flat;
+  std::size_t holes = 0;
+};
+
+const LoadedInput& load(const Input& input) {
+  static LoadedInput loaded;
+  if (loaded.name != input.name) {
+    loaded = {};
+    loaded.polygon = input.load();
+    loaded.holes = loaded.polygon.empty() ? 0 : loaded.polygon.size() - 1;
+    pear::detail::flatten(loaded.polygon, loaded.flat);
+    loaded.name = input.name;
+  }
+  return loaded;
+}
+
+void set_result_counters(benchmark::State& state, const std::string& label,
+                         const LoadedInput& input, std::size_t triangles, std::size_t peak_bytes,
+                         const Triangles& result) {
+  const auto n = static_cast<double>(input.flat.points.size());
+  const pear::QualityStatistics quality = pear::quality(input.flat.points, result);
+  pear::ValidateOptions options;
+  options.max_messages = 1;
+  const pear::ValidationReport report = pear::validate(input.flat, result, options);
+  if (!report.valid && !report.messages.empty())
+    std::fprintf(stderr, "%s: %s\n", label.c_str(), report.messages[0].c_str());
+  using benchmark::Counter;
+  state.counters["vertices"] = n;
+  state.counters["holes"] = static_cast<double>(input.holes);
+  state.counters["triangles"] = static_cast<double>(triangles);
+  state.counters["valid"] = report.valid ? 1 : 0;
+  state.counters["ns_per_vertex"] =
+      Counter(n * 1e-9, Counter::kIsIterationInvariantRate | Counter::kInvert);
+  state.counters["peak_bytes_per_vertex"] = static_cast<double>(peak_bytes) / n;
+  state.counters["min_angle_avg_deg"] = quality.min_angle_avg_deg;
+  state.counters["dev60_avg_deg"] = quality.dev60_avg_deg;
+}
+
+/// What the untimed first run found, kept across repetitions of the same benchmark.
+struct FirstRun {
+  std::size_t triangles = 0;
+  std::size_t peak_bytes = 0;
+  double seconds = 0;
+  Triangles result;
+};
+
+double env_seconds(const char* name, double fallback) {
+  const char* value = std::getenv(name);
+  return value != nullptr && *value != '\0' ? std::strtod(value, nullptr) : fallback;
+}
+
+/// Synthetic sizes grow tenfold, and no triangulator is faster than linear: when the previous
+/// size of the same family took more than a tenth of PEAR_BENCH_MAX_SECONDS (default 20), the
+/// next one is skipped rather than left running for minutes (GEOS's and some ear clippers'
+/// quadratic cases).
+std::string too_slow(const Input& input, const std::string& triangulator,
+                     std::map<std::string, double>& seconds_by_family) {
+  const std::size_t dash = input.name.rfind('-');
+  if (input.name.find('/') != std::string::npos || dash == std::string::npos) return {};
+  const std::string family = input.name.substr(0, dash) + "/" + triangulator;
+  const double limit = env_seconds("PEAR_BENCH_MAX_SECONDS", 20);
+  const auto previous = seconds_by_family.find(family);
+  if (previous == seconds_by_family.end() || previous->second * 10 <= limit) return {};
+  return "skipped: the 10x smaller input took " + std::to_string(previous->second) +
+         " s, over PEAR_BENCH_MAX_SECONDS / 10";
+}
+
+void run(benchmark::State& state, const Input& input, const Triangulator& triangulator) {
+  static std::map<std::string, FirstRun> first_runs;
+  static std::map<std::string, double> seconds_by_family;
+  const std::string label = input.name + "/" + triangulator.name;
+  try {
+    auto found = first_runs.find(label);
+    if (found == first_runs.end()) {
+      if (std::string why = too_slow(input, triangulator.name, seconds_by_family); !why.empty())
+        throw std::runtime_error(why);
+    }
+    const LoadedInput& loaded = load(input);
+    const std::unique_ptr<PreparedPolygon> prepared = triangulator.prepare(loaded.polygon);
+    if (found == first_runs.end()) {
+      FirstRun first;
+      const auto start = std::chrono::steady_clock::now();
+      start_counting_memory();
+      try {
+        first.triangles = prepared->triangulate();
+      } catch (...) {
+        stop_counting_memory();
+        throw;
+      }
+      first.peak_bytes = stop_counting_memory();
+      first.seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      first.result = prepared->triangles();
+      const std::size_t dash = input.name.rfind('-');
+      seconds_by_family[input.name.substr(0, dash) + "/" + triangulator.name] = first.seconds;
+      found = first_runs.emplace(label, std::move(first)).first;
+    }
+    std::size_t triangles = 0;
+    for (auto _ : state) benchmark::DoNotOptimize(triangles = prepared->triangulate());
+    set_result_counters(state, label, loaded, triangles, found->second.peak_bytes,
+                        found->second.result);
+  } catch (const std::exception& error) {
+    state.SkipWithError(error.what());
+  }
+}
+
+}  // namespace
+}  // namespace bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  const auto triangulators = bench::triangulators();
+  for (const bench::Input& input : bench::inputs()) {
+    for (const bench::Triangulator& triangulator : triangulators) {
+      benchmark::RegisterBenchmark(("triangulate/" + input.name + "/" + triangulator.name).c_str(),
+                                   [input, triangulator](benchmark::State& state) {
+                                     bench::run(state, input, triangulator);
+                                   })
+          ->Unit(benchmark::kMillisecond);
+    }
+  }
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,13 @@
+// Peak heap use of one run, counted by this binary's global operator new and delete.
+#pragma once
+
+#include <cstddef>
+
+namespace bench {
+
+/// Starts counting live heap bytes (as malloc_usable_size reports them) from zero.
+void start_counting_memory();
+/// Stops counting and returns the peak of live bytes since start_counting_memory().
+std::size_t stop_counting_memory();
+
+}  // namespace bench
