@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <numeric>
 #include <set>
@@ -205,6 +206,44 @@ TEST(Executor, UsesSeveralThreadsWhenWorkBlocksOthers) {
   }
   group.wait();
   EXPECT_EQ(started.load(), 2);
+}
+
+// Lost wake-ups would hang these (and meson's timeout would fail them): between rounds the pool
+// idles long enough to fall asleep, so every round needs a sleeper to be woken.
+TEST(Executor, SleepingWorkersAreWokenForWorkThatNeedsThem) {
+  pear::Executor executor(2);
+  for (int round = 0; round < 200; ++round) {
+    std::this_thread::sleep_for(std::chrono::microseconds(300));  // let the worker sleep
+    std::atomic<int> started{0};
+    pear::TaskGroup group(executor);
+    for (int i = 0; i < 2; ++i) {
+      group.run([&] {
+        started.fetch_add(1);
+        while (started.load() < 2) std::this_thread::yield();  // needs both threads at once
+      });
+    }
+    group.wait();
+    ASSERT_EQ(started.load(), 2) << "round " << round;
+  }
+}
+
+TEST(Executor, SleepingWaiterIsWokenWhenTheLastTaskEnds) {
+  pear::Executor executor(2);
+  for (int round = 0; round < 200; ++round) {
+    std::atomic<bool> picked_up{false};
+    std::atomic<bool> finished{false};
+    pear::TaskGroup group(executor);
+    group.run([&] {
+      picked_up = true;
+      std::this_thread::sleep_for(std::chrono::microseconds(300));  // the waiter falls asleep
+      finished = true;
+    });
+    // Not helping yet, the caller lets the worker take the task; then it waits while the task
+    // still sleeps, finds nothing to do, sleeps itself and must be woken by the task's end.
+    while (!picked_up.load()) std::this_thread::yield();
+    group.wait();
+    ASSERT_TRUE(picked_up.load() && finished.load()) << "round " << round;
+  }
 }
 
 TEST(Executor, CurrentExecutorIsTheOneRunningTheTask) {
