@@ -8,7 +8,9 @@
 // which is steadier on a shared machine).
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
@@ -16,6 +18,8 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "inputs.hpp"
 #include "memory.hpp"
@@ -83,33 +87,53 @@ double env_seconds(const char* name, double fallback) {
   return value != nullptr && *value != '\0' ? std::strtod(value, nullptr) : fallback;
 }
 
-/// Synthetic sizes grow tenfold, and no triangulator is faster than linear: when the previous
-/// size of the same family took more than a tenth of PEAR_BENCH_MAX_SECONDS (default 20), the
-/// next one is skipped rather than left running for minutes (GEOS's and some ear clippers'
-/// quadratic cases).
-std::string too_slow(const Input& input, const std::string& triangulator,
-                     std::map<std::string, double>& seconds_by_family) {
+/// One untimed run's duration per family and triangulator ("comb/geos_ear"), by size.
+using Durations = std::map<std::string, std::vector<std::pair<double, double>>>;
+
+std::string family_of(const Input& input, const std::string& triangulator) {
   const std::size_t dash = input.name.rfind('-');
   if (input.name.find('/') != std::string::npos || dash == std::string::npos) return {};
-  const std::string family = input.name.substr(0, dash) + "/" + triangulator;
+  return input.name.substr(0, dash) + "/" + triangulator;
+}
+
+/// The synthetic sizes of a family run small to large. From the two largest done so far we
+/// extrapolate one run of this size (growth n^e, e in [1, 2.5]) and skip it when that exceeds
+/// PEAR_BENCH_MAX_SECONDS (default 20): GEOS and some ear clippers are quadratic on some
+/// families and would run for hours.
+std::string too_slow(const std::string& family, double vertices, const Durations& durations) {
+  const auto found = durations.find(family);
+  if (family.empty() || found == durations.end()) return {};
+  const auto& runs = found->second;
+  const auto [n1, t1] = runs.back();
+  double exponent = 1;
+  if (runs.size() >= 2 && runs[runs.size() - 2].second > 1e-3) {
+    const auto [n0, t0] = runs[runs.size() - 2];
+    exponent = std::clamp(std::log(t1 / t0) / std::log(n1 / n0), 1.0, 2.5);
+  }
+  const double estimate = t1 * std::pow(vertices / n1, exponent);
   const double limit = env_seconds("PEAR_BENCH_MAX_SECONDS", 20);
-  const auto previous = seconds_by_family.find(family);
-  if (previous == seconds_by_family.end() || previous->second * 10 <= limit) return {};
-  return "skipped: the 10x smaller input took " + std::to_string(previous->second) +
-         " s, over PEAR_BENCH_MAX_SECONDS / 10";
+  if (estimate <= limit) return {};
+  char message[160];
+  std::snprintf(message, sizeof message,
+                "skipped: one run estimated at %.0f s (n^%.1f from smaller sizes), over "
+                "PEAR_BENCH_MAX_SECONDS=%g",
+                estimate, exponent, limit);
+  return message;
 }
 
 void run(benchmark::State& state, const Input& input, const Triangulator& triangulator) {
   static std::map<std::string, FirstRun> first_runs;
-  static std::map<std::string, double> seconds_by_family;
+  static Durations durations;
   const std::string label = input.name + "/" + triangulator.name;
   try {
+    const LoadedInput& loaded = load(input);
+    const auto vertices = static_cast<double>(loaded.flat.points.size());
+    const std::string family = family_of(input, triangulator.name);
     auto found = first_runs.find(label);
     if (found == first_runs.end()) {
-      if (std::string why = too_slow(input, triangulator.name, seconds_by_family); !why.empty())
+      if (std::string why = too_slow(family, vertices, durations); !why.empty())
         throw std::runtime_error(why);
     }
-    const LoadedInput& loaded = load(input);
     const std::unique_ptr<PreparedPolygon> prepared = triangulator.prepare(loaded.polygon);
     if (found == first_runs.end()) {
       FirstRun first;
@@ -125,8 +149,7 @@ void run(benchmark::State& state, const Input& input, const Triangulator& triang
       first.seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       first.result = prepared->triangles();
-      const std::size_t dash = input.name.rfind('-');
-      seconds_by_family[input.name.substr(0, dash) + "/" + triangulator.name] = first.seconds;
+      if (!family.empty()) durations[family].push_back({vertices, first.seconds});
       found = first_runs.emplace(label, std::move(first)).first;
     }
     std::size_t triangles = 0;
