@@ -39,6 +39,10 @@ enum class EarHeuristic : std::uint8_t {
 struct Options {
   Algorithm algorithm = Algorithm::automatic;
   EarHeuristic heuristic = EarHeuristic::top;
+  /// Check exactly, before clipping, that no two edges cross or overlap and that no vertex lies
+  /// inside another edge; a violation gives Status::not_simple and names the place. Without
+  /// the check, such input may come back as Status::ok with a triangulation that is not valid.
+  bool check_simplicity = true;
 };
 
 /// Ear statistics of a polygon's (bridged) boundary before clipping: the paper's Fig. 7 numbers.

@@ -4,8 +4,9 @@
 //   indices in range, no repeated triangle, every triangle strictly counterclockwise by exact
 //   orient2d, every boundary edge of the cleaned input used by exactly one triangle on its inner
 //   side, every other edge by zero or two triangles with opposite orientation, the triangle count
-//   n + 2h - 2 - 2m (m: kept vertices minus distinct kept points, i.e. touching rings), and the
-//   total triangle area equal to the polygon's area.
+//   n + 2h - 2 - 2m (m: kept vertices minus distinct kept points, i.e. touching rings; only
+//   enforced when m = 0, since self-touching rings can differ and the other checks suffice), and
+//   the total triangle area equal to the polygon's area.
 // Optionally: every non-boundary edge locally Delaunay by exact incircle (for a CDT).
 #pragma once
 

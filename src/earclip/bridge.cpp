@@ -74,25 +74,8 @@ std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
   edge_start_.push_back(start);
   if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
-  const Point a = b_->pos[start], c = b_->pos[b_->next[start]];
-  const int r0 = frame_.row(std::min(a.y, c.y)), r1 = frame_.row(std::max(a.y, c.y));
-  for (int r = r0; r <= r1; ++r) {
-    // The part of the segment within row r's band, widened by a cell for rounding.
-    double xa = a.x, xc = c.x;
-    if (r0 != r1 && frame_.inv_h > 0) {
-      const double band_lo = frame_.y0 + r / frame_.inv_h,
-                   band_hi = frame_.y0 + (r + 1) / frame_.inv_h;
-      const auto x_at = [&](double y) {
-        const double t = std::clamp((y - a.y) / (c.y - a.y), 0.0, 1.0);
-        return a.x + t * (c.x - a.x);
-      };
-      xa = x_at(band_lo);
-      xc = x_at(band_hi);
-    }
-    const int c0 = std::max(0, frame_.column(std::min(xa, xc)) - 1);
-    const int c1 = std::min(frame_.nx - 1, frame_.column(std::max(xa, xc)) + 1);
-    for (int col = c0; col <= c1; ++col) edge_cells_[frame_.cell(col, r)].push_back(id);
-  }
+  frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]],
+                                  [&](std::size_t cell) { edge_cells_[cell].push_back(id); });
   return id;
 }
 

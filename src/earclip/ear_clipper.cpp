@@ -32,8 +32,15 @@ void EarClipper::classify(std::uint32_t entry) {
     ++remaining_;
     v = b.next[v];
   } while (v != entry);
-  for (std::uint32_t u = 0; u < b.size(); ++u)
-    if (alive_[u]) dissolve_spikes(u);
+  // A spike in the input (a ring running out and back along one segment) is a ring
+  // self-intersection: it is dissolved, and the result is flagged as a best effort.
+  const std::size_t before = remaining_;
+  for (std::uint32_t u = 0; u < b.size(); ++u) {
+    if (!alive_[u]) continue;
+    const std::uint32_t vertex = b.vertex[u];
+    dissolve_spikes(u);
+    if (remaining_ != before && !best_effort_) best_effort_ = true, best_effort_vertex_ = vertex;
+  }
   for (std::uint32_t u = 0; u < b.size(); ++u) {
     if (alive_[u] && !(b.turn(u) > 0)) {
       reflex_[u] = 1;
@@ -155,8 +162,14 @@ void EarClipper::update_neighbour(std::uint32_t v) {
   ++stamp_[v];
 }
 
+/// Queues v if it is an ear: by shape for "top", last in first out for "fast" (the newest
+/// ears sit next to the last clip, so clipping stays local and cheap).
 void EarClipper::offer(std::uint32_t v) {
   if (!is_ear(v)) return;
+  if (heuristic_ == EarHeuristic::fast) {
+    heap_.push_back({0, v, stamp_[v]});
+    return;
+  }
   heap_.push_back({quality(v), v, stamp_[v]});
   std::push_heap(heap_.begin(), heap_.end(),
                  [](const auto& x, const auto& y) { return heap_less(x, y); });
@@ -164,8 +177,9 @@ void EarClipper::offer(std::uint32_t v) {
 
 bool EarClipper::pop(std::uint32_t& v) {
   while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(),
-                  [](const auto& x, const auto& y) { return heap_less(x, y); });
+    if (heuristic_ == EarHeuristic::top)
+      std::pop_heap(heap_.begin(), heap_.end(),
+                    [](const auto& x, const auto& y) { return heap_less(x, y); });
     const Candidate top = heap_.back();
     heap_.pop_back();
     if (alive_[top.node] && stamp_[top.node] == top.stamp) {
@@ -176,12 +190,14 @@ bool EarClipper::pop(std::uint32_t& v) {
   return false;
 }
 
-void EarClipper::clip_top() {
-  std::uint32_t last = 0;
-  for (std::uint32_t v = 0; v < b_->size(); ++v)
-    if (alive_[v]) offer(v), last = v;
+void EarClipper::clip_ears(std::uint32_t entry) {
+  std::uint32_t last = entry;
+  std::uint32_t v = entry;
+  do {
+    offer(v);
+    v = b_->next[v];
+  } while (v != entry);
   while (remaining_ > 3) {
-    std::uint32_t v;
     if (!pop(v)) {
       if (!fall_back(live(last))) break;
       last = touched_;
@@ -190,34 +206,10 @@ void EarClipper::clip_top() {
     }
     const std::uint32_t p = b_->prev[v], n = b_->next[v];
     clip(v);
-    const std::uint32_t p_left = settle(p, true), n_left = settle(n, true);
-    last = n_left != UINT32_MAX ? n_left : p_left;
+    const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
+    last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
   }
   if (remaining_ == 3) finish(live(last));
-}
-
-/// Without a queue: walk the boundary, clip every ear met, and step back after a clip, since
-/// the previous node is the likeliest new ear.
-void EarClipper::clip_fast(std::uint32_t entry) {
-  std::uint32_t v = entry;
-  std::size_t misses = 0;
-  while (remaining_ > 3) {
-    v = live(v);
-    if (is_ear(v)) {
-      const std::uint32_t p = b_->prev[v], n = b_->next[v];
-      clip(v);
-      const std::uint32_t p_left = settle(p, false), n_left = settle(n, false);
-      v = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
-      misses = 0;
-      continue;
-    }
-    v = b_->next[v];
-    if (++misses <= remaining_) continue;
-    if (!fall_back(live(v))) break;
-    v = touched_;
-    misses = 0;
-  }
-  if (remaining_ == 3) finish(live(v));
 }
 
 bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
@@ -227,10 +219,7 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   best_effort_ = false;
   heap_.clear();
   classify(entry);
-  if (heuristic == EarHeuristic::top)
-    clip_top();
-  else
-    clip_fast(entry);
+  clip_ears(live(entry));
   return !best_effort_;
 }
 

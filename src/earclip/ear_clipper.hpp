@@ -54,8 +54,7 @@ class EarClipper {
   bool pop(std::uint32_t& v);
   bool fall_back(std::uint32_t near);
   void finish(std::uint32_t any);
-  void clip_top();
-  void clip_fast(std::uint32_t entry);
+  void clip_ears(std::uint32_t entry);
 
   Boundary* b_ = nullptr;
   TriangleList* out_ = nullptr;

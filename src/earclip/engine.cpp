@@ -11,10 +11,16 @@ Diagnostic Engine::locate(const FlatPolygon& input, Issue issue, std::uint32_t c
   return {issue, ring, caller_index - input.ring_starts[ring]};
 }
 
-bool Engine::prepare(const FlatPolygon& input, std::vector<Diagnostic>& diagnostics,
-                     Status& status) {
+bool Engine::prepare(const FlatPolygon& input, bool check_simplicity,
+                     std::vector<Diagnostic>& diagnostics, Status& status) {
   status = clean_polygon(input, clean_, diagnostics);
   if (status != Status::ok) return false;
+  if (check_simplicity) {
+    if (const auto vertex = simplicity_.find_violation(clean_)) {
+      diagnostics.push_back(locate(input, Issue::not_simple, clean_.original[*vertex]));
+      status = Status::not_simple;
+    }
+  }
   boundary_.clear();
   for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
     const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
@@ -34,9 +40,9 @@ Status Engine::triangulate(const FlatPolygon& input, const Options& options, Tri
                            std::vector<Diagnostic>& diagnostics) {
   out.clear();
   Status status;
-  if (!prepare(input, diagnostics, status)) return status;
+  if (!prepare(input, options.check_simplicity, diagnostics, status)) return status;
   out.reserve(boundary_.size());
-  if (!clipper_.run(boundary_, 0, options.heuristic, out)) {
+  if (!clipper_.run(boundary_, 0, options.heuristic, out) && status == Status::ok) {
     diagnostics.push_back(locate(input, Issue::not_simple, clipper_.best_effort_vertex()));
     status = Status::not_simple;
   }
@@ -46,7 +52,7 @@ Status Engine::triangulate(const FlatPolygon& input, const Options& options, Tri
 EarStatistics Engine::statistics(const FlatPolygon& input) {
   std::vector<Diagnostic> ignored;
   Status status;
-  if (!prepare(input, ignored, status)) return {};
+  if (!prepare(input, false, ignored, status)) return {};
   return clipper_.statistics(boundary_, 0);
 }
 

@@ -6,6 +6,7 @@
 #include "bridge.hpp"
 #include "clean.hpp"
 #include "ear_clipper.hpp"
+#include "simplicity.hpp"
 
 namespace pear::detail {
 
@@ -17,11 +18,13 @@ class Engine {
 
  private:
   /// Cleans and bridges; returns false when nothing can be triangulated.
-  bool prepare(const FlatPolygon& input, std::vector<Diagnostic>& diagnostics, Status& status);
+  bool prepare(const FlatPolygon& input, bool check_simplicity,
+               std::vector<Diagnostic>& diagnostics, Status& status);
   Diagnostic locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const;
 
   CleanPolygon clean_;
   Boundary boundary_;
+  SimplicityCheck simplicity_;
   HoleBridger bridger_;
   EarClipper clipper_;
 };

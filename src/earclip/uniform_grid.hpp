@@ -42,6 +42,28 @@ struct GridFrame {
            static_cast<std::size_t>(column);
   }
   std::size_t cell_count() const { return static_cast<std::size_t>(nx) * ny; }
+
+  /// Calls visit(cell) for every cell the segment a-c passes through, and for the neighbouring
+  /// cell on each side in its row (a margin for rounding): every point of the segment lies in
+  /// one of the visited cells.
+  template <class Visit>
+  void for_each_cell_on_segment(Point a, Point c, Visit&& visit) const {
+    const int r0 = row(std::min(a.y, c.y)), r1 = row(std::max(a.y, c.y));
+    for (int r = r0; r <= r1; ++r) {
+      double xa = a.x, xc = c.x;
+      if (r0 != r1 && inv_h > 0) {  // the part of the segment inside row r's band
+        const auto x_at = [&](double y) {
+          const double t = std::clamp((y - a.y) / (c.y - a.y), 0.0, 1.0);
+          return a.x + t * (c.x - a.x);
+        };
+        xa = x_at(y0 + r / inv_h);
+        xc = x_at(y0 + (r + 1) / inv_h);
+      }
+      const int c0 = std::max(0, column(std::min(xa, xc)) - 1);
+      const int c1 = std::min(nx - 1, column(std::max(xa, xc)) + 1);
+      for (int col = c0; col <= c1; ++col) visit(cell(col, r));
+    }
+  }
 };
 
 }  // namespace pear::detail

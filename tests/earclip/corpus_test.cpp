@@ -98,7 +98,15 @@ void check_polygon(const Polygon& polygon, bool expect_valid, EarHeuristic heuri
   for (const Ring& ring : polygon) n += ring.size();
   for (const auto& t : result.triangles)
     for (auto i : t) ASSERT_LT(i, n);
-  if (!expect_valid) return;
+  if (!expect_valid) {
+    // Invalid input may give any status but ok with a wrong triangulation: never silently wrong.
+    if (result.status == Status::ok) {
+      const ValidationReport report = validate(polygon, std::span(result.triangles));
+      EXPECT_TRUE(report.valid) << "status ok on invalid input, but: "
+                                << (report.messages.empty() ? "" : report.messages.front());
+    }
+    return;
+  }
   EXPECT_EQ(result.status, Status::ok)
       << (result.diagnostics.empty() ? "" : describe(result.diagnostics.back()));
   const ValidationReport report = validate(polygon, std::span(result.triangles));
@@ -157,7 +165,7 @@ INSTANTIATE_TEST_SUITE_P(SharedCoast, Corpus,
                          ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"coast"})),
                          test_name);
 INSTANTIATE_TEST_SUITE_P(SharedCounties, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"}, 10)),
+                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"})),
                          test_name);
 GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Corpus);
 

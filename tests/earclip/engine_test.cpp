@@ -64,15 +64,32 @@ TEST_P(Engine, HoleTouchingOuterRingAtAVertex) {
   expect_valid(p, GetParam(), "hole touching outer vertex");
 }
 
-TEST_P(Engine, HoleTouchingOuterEdgeInside) {
-  // The hole's leftmost vertex (0, 2) lies inside the outer edge x = 0.
+TEST_P(Engine, HoleVertexInsideOuterEdgeIsReportedButCovered) {
+  // The hole's vertex (0, 2) lies inside the outer edge x = 0: not a valid boundary (the edge
+  // would need splitting), so the status says so; the area is still covered exactly once.
   const Polygon p = {square(0, 0, 4), {{0, 2}, {2, 1}, {2, 3}}};
   const auto result = triangulate(p, {.heuristic = GetParam()});
-  ASSERT_EQ(result.status, Status::ok);
-  ValidateOptions options;
-  const auto report = validate(p, std::span(result.triangles), options);
-  EXPECT_LE(report.area_rel_error, 1e-12);
+  EXPECT_EQ(result.status, Status::not_simple);
+  ASSERT_FALSE(result.diagnostics.empty());
+  EXPECT_EQ(result.diagnostics[0].issue, Issue::not_simple);
+  const auto report = validate(p, std::span(result.triangles));
+  EXPECT_EQ(report.area_rel_error, 0);
   EXPECT_EQ(report.bad_orientation, 0u);
+}
+
+TEST_P(Engine, CrossingHolesAreReportedNotSimple) {
+  const Polygon p = {square(0, 0, 10), reversed(square(2, 2, 3)), reversed(square(4, 4, 3))};
+  const auto result = triangulate(p, {.heuristic = GetParam()});
+  EXPECT_EQ(result.status, Status::not_simple);
+}
+
+TEST_P(Engine, SimplicityCheckCanBeSwitchedOff) {
+  // A vertex inside another edge of the same ring (a self-touching T-junction).
+  const Ring r = {{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
+  EXPECT_EQ(triangulate(Polygon{r}, {.heuristic = GetParam()}).status, Status::not_simple);
+  const auto unchecked =
+      triangulate(Polygon{r}, {.heuristic = GetParam(), .check_simplicity = false});
+  EXPECT_NE(unchecked.status, Status::invalid_input);
 }
 
 TEST_P(Engine, HolesTouchingEachOther) {
