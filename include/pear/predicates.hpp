@@ -6,10 +6,28 @@
 
 namespace pear {
 
+namespace detail {
+/// Stage A's error bound, (3 + 16e)e with e = 2^-53 (Shewchuk 1997, section 4.3).
+inline constexpr double orient2d_filter_bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
+/// Stages B to D, for the near-collinear inputs the filter cannot decide.
+double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum);
+}  // namespace detail
+
 /// Twice the signed area of triangle (a, b, c), with the sign exactly right: positive if a, b, c
 /// are in counterclockwise order, negative if clockwise, zero if collinear.
 /// Exact for all inputs whose coordinates are zero or between 2^-200 and 2^200 in magnitude.
-double orient2d(const Point& a, const Point& b, const Point& c);
+/// The floating-point filter is inline, so the easy case costs about a plain determinant.
+inline double orient2d(const Point& a, const Point& b, const Point& c) {
+  const double det_left = (a.x - c.x) * (b.y - c.y);
+  const double det_right = (a.y - c.y) * (b.x - c.x);
+  const double det = det_left - det_right;
+  // One bound test covers the paper's early return for products of opposite sign as well.
+  const double det_sum =
+      (det_left < 0 ? -det_left : det_left) + (det_right < 0 ? -det_right : det_right);
+  if ((det < 0 ? -det : det) >= detail::orient2d_filter_bound * det_sum) return det;
+  return detail::orient2d_adaptive(a, b, c, det_sum);
+}
+
 
 /// For a, b, c in counterclockwise order: positive if d lies inside their circumcircle, negative
 /// if outside, zero if on it. The sign is exact on the same domain as orient2d.

@@ -10,6 +10,13 @@ bool heap_less(const auto& a, const auto& b) {
   return a.quality < b.quality || (a.quality == b.quality && a.node > b.node);
 }
 
+/// p lies on segment a-b (given collinear) strictly between its endpoints.
+bool on_open_segment(const Point& p, const Point& a, const Point& b) {
+  if (p == a || p == b) return false;
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
+
 Point min_corner(const Point& a, const Point& b, const Point& c) {
   return {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
 }
@@ -22,6 +29,7 @@ Point max_corner(const Point& a, const Point& b, const Point& c) {
 void EarClipper::classify(std::uint32_t entry) {
   Boundary& b = *b_;
   reflex_.assign(b.size(), 0);
+  grid_built_ = false;
   alive_.assign(b.size(), 0);
   stamp_.assign(b.size(), 0);
   scratch_.clear();
@@ -42,19 +50,26 @@ void EarClipper::classify(std::uint32_t entry) {
     if (remaining_ != before && !best_effort_) best_effort_ = true, best_effort_vertex_ = vertex;
   }
   for (std::uint32_t u = 0; u < b.size(); ++u) {
-    if (alive_[u] && !(b.turn(u) > 0)) {
+    if (alive_[u] && b.turn(u) < 0) {
       reflex_[u] = 1;
       scratch_.push_back(u);
     }
   }
   grid_.build(b, scratch_);
+  grid_built_ = true;
 }
 
 void EarClipper::remove(std::uint32_t v) {
   b_->unlink(v);
   alive_[v] = 0;
-  reflex_[v] = 0;
+  drop_reflex(v);
   --remaining_;
+}
+
+void EarClipper::drop_reflex(std::uint32_t v) {
+  if (!reflex_[v]) return;
+  reflex_[v] = 0;
+  if (grid_built_) grid_.remove(v, b_->pos[v]);
 }
 
 /// A node whose neighbours coincide is the tip of a zero-area spike: the remnant of a lobe of
@@ -128,12 +143,17 @@ bool EarClipper::is_ear(std::uint32_t v) const {
   const std::uint32_t p = b.prev[v], n = b.next[v];
   const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
   if (!(orient2d(a, t, c) > 0)) return false;
+  // A boundary edge running along the diagonal from one of its ends (a collinear chain that
+  // the grid does not hold) makes the diagonal touch the boundary.
+  const Point &before = b.pos[b.prev[p]], &after = b.pos[b.next[n]];
+  if (orient2d(a, c, after) == 0 && on_open_segment(after, a, c)) return false;
+  if (orient2d(a, c, before) == 0 && on_open_segment(before, a, c)) return false;
   const Point lo = min_corner(a, t, c), hi = max_corner(a, t, c);
-  return !grid_.any_in_box(lo, hi, [&](std::uint32_t q) {
-    if (!reflex_[q] || q == p || q == v || q == n) return false;
-    const Point& x = b.pos[q];
+  return !grid_.any_in_box(lo, hi, [&](const ReflexGrid::Entry& e) {
+    const Point& x = e.pos;
     if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
-    return blocks(p, v, n, q);
+    if (e.node == p || e.node == v || e.node == n) return false;
+    return blocks(p, v, n, e.node);
   });
 }
 
@@ -158,7 +178,7 @@ void EarClipper::clip(std::uint32_t v) {
 
 /// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
 void EarClipper::update_neighbour(std::uint32_t v) {
-  if (reflex_[v] && b_->turn(v) > 0) reflex_[v] = 0;
+  if (reflex_[v] && b_->turn(v) >= 0) drop_reflex(v);
   ++stamp_[v];
 }
 
@@ -230,10 +250,10 @@ EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {
   std::uint32_t v = entry;
   do {
     ++stats.vertices;
-    if (reflex_[v])
-      ++stats.reflex;
-    else
+    if (b.turn(v) > 0)
       ++stats.convex;
+    else
+      ++stats.reflex;
     if (remaining_ > 3 && is_ear(v)) ++stats.ears;
     v = b.next[v];
   } while (v != entry);

@@ -43,6 +43,7 @@ class EarClipper {
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);
+  void drop_reflex(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
   std::uint32_t settle(std::uint32_t v, bool queue);
   /// A live node at or after v: removed nodes keep pointing at nodes live when they left.
@@ -62,13 +63,17 @@ class EarClipper {
   std::size_t remaining_ = 0;
   bool best_effort_ = false;
   std::uint32_t best_effort_vertex_ = 0;
-  std::uint32_t touched_ = 0;         ///< a live node next to the last fallback's change
-  std::vector<std::uint8_t> reflex_;  ///< not strictly convex, still on the boundary
+  std::uint32_t touched_ = 0;  ///< a live node next to the last fallback's change
+  /// Strictly reflex and still on the boundary. Collinear nodes need no hashing: a node inside
+  /// an ear's triangle implies a strictly reflex one there too (the node farthest from the
+  /// diagonal turns away from it), except for chains along the diagonal, checked at its ends.
+  std::vector<std::uint8_t> reflex_;
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> stamp_;  ///< bumped when a node's ear status may have changed
   std::vector<std::uint32_t> scratch_;
   std::vector<Candidate> heap_;
   ReflexGrid grid_;
+  bool grid_built_ = false;  ///< spikes are dissolved before the grid exists
 };
 
 }  // namespace pear::detail

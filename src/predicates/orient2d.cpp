@@ -14,14 +14,16 @@ using detail::epsilon;
 using detail::Expansion;
 
 // Error bound coefficients from the paper's analysis of this exact sequence of operations.
-constexpr double ccw_bound_a = (3.0 + 16.0 * epsilon) * epsilon;
+static_assert(detail::orient2d_filter_bound == (3.0 + 16.0 * epsilon) * epsilon);
 constexpr double ccw_bound_b = (2.0 + 12.0 * epsilon) * epsilon;
 constexpr double ccw_bound_c = (9.0 + 64.0 * epsilon) * epsilon * epsilon;
 constexpr double result_bound = (3.0 + 8.0 * epsilon) * epsilon;
 
+}  // namespace
+
+namespace detail {
 // Stages B to D, reached only when the filter cannot decide (near-collinear input).
-[[gnu::noinline]] double orient2d_adaptive(const Point& a, const Point& b, const Point& c,
-                                           double det_sum) {
+double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum) {
   const double acx = a.x - c.x;
   const double bcx = b.x - c.x;
   const double acy = a.y - c.y;
@@ -54,19 +56,6 @@ constexpr double result_bound = (3.0 + 8.0 * epsilon) * epsilon;
   return detail::expansion_value(exact.view());
 }
 
-}  // namespace
-
-double orient2d(const Point& a, const Point& b, const Point& c) {
-  // Stage A: the plain determinant, trusted when it exceeds its proven rounding error.
-  const double det_left = (a.x - c.x) * (b.y - c.y);
-  const double det_right = (a.y - c.y) * (b.x - c.x);
-  const double det = det_left - det_right;
-  // The paper returns early when the two products differ in sign; the bound below accepts those
-  // cases too (|det| is then their full sum), with one predictable branch instead of three.
-  const double det_sum = std::fabs(det_left) + std::fabs(det_right);
-  const double bound = ccw_bound_a * det_sum;
-  if (std::fabs(det) >= bound) return det;  // also exact zeros: in the domain nothing underflows
-  return orient2d_adaptive(a, b, c, det_sum);
-}
+}  // namespace detail
 
 }  // namespace pear
