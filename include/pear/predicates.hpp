@@ -28,7 +28,6 @@ inline double orient2d(const Point& a, const Point& b, const Point& c) {
   return detail::orient2d_adaptive(a, b, c, det_sum);
 }
 
-
 /// For a, b, c in counterclockwise order: positive if d lies inside their circumcircle, negative
 /// if outside, zero if on it. The sign is exact on the same domain as orient2d.
 double incircle(const Point& a, const Point& b, const Point& c, const Point& d);

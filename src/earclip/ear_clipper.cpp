@@ -149,7 +149,7 @@ bool EarClipper::is_ear(std::uint32_t v) const {
   if (orient2d(a, c, after) == 0 && on_open_segment(after, a, c)) return false;
   if (orient2d(a, c, before) == 0 && on_open_segment(before, a, c)) return false;
   const Point lo = min_corner(a, t, c), hi = max_corner(a, t, c);
-  return !grid_.any_in_box(lo, hi, [&](const ReflexGrid::Entry& e) {
+  return !grid_.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
     const Point& x = e.pos;
     if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
     if (e.node == p || e.node == v || e.node == n) return false;
@@ -170,6 +170,14 @@ double EarClipper::quality(std::uint32_t v) const {
   return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
 }
 
+/// Squared length of v's ear diagonal: "fast" clips short diagonals first, which keeps the
+/// triangles, and so the ear tests, small.
+double EarClipper::diagonal(std::uint32_t v) const {
+  const Point &a = b_->pos[b_->prev[v]], &c = b_->pos[b_->next[v]];
+  const double dx = a.x - c.x, dy = a.y - c.y;
+  return dx * dx + dy * dy;
+}
+
 void EarClipper::clip(std::uint32_t v) {
   const Boundary& b = *b_;
   out_->push_back({b.vertex[b.prev[v]], b.vertex[v], b.vertex[b.next[v]]});
@@ -186,20 +194,15 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// ears sit next to the last clip, so clipping stays local and cheap).
 void EarClipper::offer(std::uint32_t v) {
   if (!is_ear(v)) return;
-  if (heuristic_ == EarHeuristic::fast) {
-    heap_.push_back({0, v, stamp_[v]});
-    return;
-  }
-  heap_.push_back({quality(v), v, stamp_[v]});
+  heap_.push_back({heuristic_ == EarHeuristic::top ? quality(v) : -diagonal(v), v, stamp_[v]});
   std::push_heap(heap_.begin(), heap_.end(),
                  [](const auto& x, const auto& y) { return heap_less(x, y); });
 }
 
 bool EarClipper::pop(std::uint32_t& v) {
   while (!heap_.empty()) {
-    if (heuristic_ == EarHeuristic::top)
-      std::pop_heap(heap_.begin(), heap_.end(),
-                    [](const auto& x, const auto& y) { return heap_less(x, y); });
+    std::pop_heap(heap_.begin(), heap_.end(),
+                  [](const auto& x, const auto& y) { return heap_less(x, y); });
     const Candidate top = heap_.back();
     heap_.pop_back();
     if (alive_[top.node] && stamp_[top.node] == top.stamp) {

@@ -40,6 +40,7 @@ class EarClipper {
   bool coincident_blocks(std::uint32_t corner, const Point& wedge_a, const Point& wedge_b,
                          const Point* diagonal_end, std::uint32_t q) const;
   double quality(std::uint32_t v) const;
+  double diagonal(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);
