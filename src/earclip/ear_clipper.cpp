@@ -6,10 +6,6 @@
 namespace pear::detail {
 namespace {
 
-bool heap_less(const auto& a, const auto& b) {
-  return a.quality < b.quality || (a.quality == b.quality && a.node > b.node);
-}
-
 /// p lies on segment a-b (given collinear) strictly between its endpoints.
 bool on_open_segment(const Point& p, const Point& a, const Point& b) {
   if (p == a || p == b) return false;
@@ -194,17 +190,14 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// ears sit next to the last clip, so clipping stays local and cheap).
 void EarClipper::offer(std::uint32_t v) {
   if (!is_ear(v)) return;
-  heap_.push_back({heuristic_ == EarHeuristic::top ? quality(v) : -diagonal(v), v, stamp_[v]});
-  std::push_heap(heap_.begin(), heap_.end(),
-                 [](const auto& x, const auto& y) { return heap_less(x, y); });
+  const int bucket = heuristic_ == EarHeuristic::top ? EarQueue::shape_bucket(quality(v))
+                                                     : EarQueue::length_bucket(diagonal(v));
+  queue_.push(bucket, {v, stamp_[v]});
 }
 
 bool EarClipper::pop(std::uint32_t& v) {
-  while (!heap_.empty()) {
-    std::pop_heap(heap_.begin(), heap_.end(),
-                  [](const auto& x, const auto& y) { return heap_less(x, y); });
-    const Candidate top = heap_.back();
-    heap_.pop_back();
+  EarQueue::Candidate top;
+  while (queue_.pop(top)) {
     if (alive_[top.node] && stamp_[top.node] == top.stamp) {
       v = top.node;
       return true;
@@ -240,7 +233,7 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   out_ = &out;
   heuristic_ = heuristic;
   best_effort_ = false;
-  heap_.clear();
+  queue_.clear();
   classify(entry);
   clip_ears(live(entry));
   return !best_effort_;

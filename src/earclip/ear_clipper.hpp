@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "boundary.hpp"
+#include "ear_queue.hpp"
 #include "pear/pear.hpp"
 #include "reflex_grid.hpp"
 
@@ -28,12 +29,6 @@ class EarClipper {
   std::uint32_t best_effort_vertex() const { return best_effort_vertex_; }
 
  private:
-  struct Candidate {
-    double quality;
-    std::uint32_t node;
-    std::uint32_t stamp;
-  };
-
   void classify(std::uint32_t entry);
   bool is_ear(std::uint32_t v) const;
   bool blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const;
@@ -72,7 +67,7 @@ class EarClipper {
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> stamp_;  ///< bumped when a node's ear status may have changed
   std::vector<std::uint32_t> scratch_;
-  std::vector<Candidate> heap_;
+  EarQueue queue_;
   ReflexGrid grid_;
   bool grid_built_ = false;  ///< spikes are dissolved before the grid exists
 };

@@ -1,0 +1,70 @@
+// The queue of candidate ears: a bucket queue on a quantized key, last in first out within a
+// bucket. FIST's heuristics need the best ear roughly, not exactly; buckets make push and pop
+// O(1) and cache-friendly where a binary heap of millions of entries was a fifth of the run.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace pear::detail {
+
+class EarQueue {
+ public:
+  struct Candidate {
+    std::uint32_t node;
+    std::uint32_t stamp;
+  };
+
+  static constexpr int bucket_count = 4096;
+
+  void clear() {
+    for (int word = 0; word < bucket_count / 64; ++word) {
+      for (std::uint64_t bits = occupied_[word]; bits != 0; bits &= bits - 1)
+        buckets_[word * 64 + std::countr_zero(bits)].clear();
+      occupied_[word] = 0;
+    }
+  }
+
+  /// Bucket 0 is popped first.
+  void push(int bucket, Candidate candidate) {
+    buckets_[bucket].push_back(candidate);
+    occupied_[bucket / 64] |= std::uint64_t{1} << (bucket % 64);
+  }
+
+  bool pop(Candidate& out) {
+    for (int word = 0; word < bucket_count / 64; ++word) {
+      if (occupied_[word] == 0) continue;
+      const int bucket = word * 64 + std::countr_zero(occupied_[word]);
+      out = buckets_[bucket].back();
+      buckets_[bucket].pop_back();
+      if (buckets_[bucket].empty()) occupied_[word] &= ~(std::uint64_t{1} << (bucket % 64));
+      return true;
+    }
+    return false;
+  }
+
+  /// "top": shape = twice the area over the sum of squared sides, 0 (sliver) .. sqrt(3)/6
+  /// (equilateral); the best shapes come first.
+  static int shape_bucket(double shape) {
+    const double scaled = (1.0 - shape * 3.4641016151377544) * (bucket_count - 1);
+    return static_cast<int>(std::clamp(scaled, 0.0, bucket_count - 1.0));
+  }
+
+  /// "fast": squared diagonal length, 16 buckets per power of two; the shortest first.
+  static int length_bucket(double squared_length) {
+    if (!(squared_length > 0)) return 0;
+    int exponent;
+    const double mantissa = std::frexp(squared_length, &exponent);  // in [0.5, 1)
+    const int fine = static_cast<int>((mantissa - 0.5) * 32);       // 0..15
+    return std::clamp((exponent + 127) * 16 + fine, 0, bucket_count - 1);
+  }
+
+ private:
+  std::vector<Candidate> buckets_[bucket_count];
+  std::uint64_t occupied_[bucket_count / 64] = {};
+};
+
+}  // namespace pear::detail
