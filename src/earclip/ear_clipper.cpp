@@ -1,6 +1,7 @@
 #include "ear_clipper.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace pear::detail {
@@ -45,8 +46,9 @@ void EarClipper::classify(std::uint32_t entry) {
     dissolve_spikes(u);
     if (remaining_ != before && !best_effort_) best_effort_ = true, best_effort_vertex_ = vertex;
   }
+  mark_pinches();
   for (std::uint32_t u = 0; u < b.size(); ++u) {
-    if (alive_[u] && b.turn(u) < 0) {
+    if (alive_[u] && (pinch_[u] || b.turn(u) < 0)) {
       reflex_[u] = 1;
       scratch_.push_back(u);
     }
@@ -55,7 +57,39 @@ void EarClipper::classify(std::uint32_t entry) {
   grid_built_ = true;
 }
 
+/// Nodes that share their position with another live node (bridge ends, rings touching at a
+/// vertex): they stay hashed whatever their angle, since a convex one at an ear's corner can
+/// still reach into the ear (the strictly-reflex argument does not cover a chain that touches
+/// a corner). Found with a hash table on the exact coordinates.
+void EarClipper::mark_pinches() {
+  const Boundary& b = *b_;
+  pinch_.assign(b.size(), 0);
+  std::size_t capacity = 16;
+  while (capacity < 2 * static_cast<std::size_t>(remaining_)) capacity *= 2;
+  position_table_.assign(capacity, UINT32_MAX);
+  const auto key = [&](const Point& p) {
+    const std::uint64_t x = std::bit_cast<std::uint64_t>(p.x + 0.0);  // -0 and +0 alike
+    const std::uint64_t y = std::bit_cast<std::uint64_t>(p.y + 0.0);
+    return (x * 0x9E3779B97F4A7C15ull) ^ (y + 0x632BE59BD9B4E019ull + (x << 6) + (x >> 2));
+  };
+  for (std::uint32_t u = 0; u < b.size(); ++u) {
+    if (!alive_[u]) continue;
+    for (std::size_t slot = key(b.pos[u]) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
+      const std::uint32_t other = position_table_[slot];
+      if (other == UINT32_MAX) {
+        position_table_[slot] = u;
+        break;
+      }
+      if (b.pos[other] == b.pos[u]) {
+        pinch_[u] = pinch_[other] = 1;
+        break;
+      }
+    }
+  }
+}
+
 void EarClipper::remove(std::uint32_t v) {
+  if (v == anchor_) anchor_ = b_->next[v];
   b_->unlink(v);
   alive_[v] = 0;
   drop_reflex(v);
@@ -111,9 +145,9 @@ bool EarClipper::blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::
   const double o3 = orient2d(c, a, x);
   if (o3 < 0) return false;
   if (o1 > 0 && o2 > 0 && o3 > 0) return true;
-  if (x == a) return coincident_blocks(q, t, c, &c, q);
-  if (x == c) return coincident_blocks(q, a, t, &a, q);
-  if (x == t) return coincident_blocks(q, c, a, nullptr, q);
+  if (x == a) return coincident_blocks(q, t, c);
+  if (x == c) return coincident_blocks(q, a, t);
+  if (x == t) return coincident_blocks(q, c, a);
   if (o3 == 0) return true;  // on the open diagonal
   const Point &qp = b.pos[b.prev[q]], &qn = b.pos[b.next[q]];
   if (o1 == 0) return orient2d(a, t, qp) > 0 || orient2d(a, t, qn) > 0;
@@ -121,17 +155,18 @@ bool EarClipper::blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::
 }
 
 /// q sits exactly on a corner of the ear; the corner's wedge is bounded by the rays towards
-/// wedge_a and wedge_b. q spoils the ear if one of its edges runs into the wedge, or (at a
-/// diagonal end) if the diagonal runs into q's own sector.
-bool EarClipper::coincident_blocks(std::uint32_t, const Point& wedge_a, const Point& wedge_b,
-                                   const Point* diagonal_end, std::uint32_t q) const {
+/// wedge_a and wedge_b. q spoils the ear if one of its edges runs into the wedge. (Whether the
+/// diagonal runs into q's own sector need not be asked: in a valid boundary that would put the
+/// corner's own edge into the wedge, and a strictly reflex node into the triangle. Asking it
+/// blocked every ear of lobes chained at one point, whose local sectors overlap.)
+bool EarClipper::coincident_blocks(std::uint32_t q, const Point& wedge_a,
+                                   const Point& wedge_b) const {
   const Boundary& b = *b_;
   const Point& corner = b.pos[q];
   const auto in_wedge = [&](const Point& y) {
     return orient2d(corner, wedge_a, y) > 0 && orient2d(wedge_b, corner, y) > 0;
   };
-  if (in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]])) return true;
-  return diagonal_end != nullptr && b.sector_contains(q, *diagonal_end);
+  return in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]]);
 }
 
 bool EarClipper::is_ear(std::uint32_t v) const {
@@ -182,7 +217,7 @@ void EarClipper::clip(std::uint32_t v) {
 
 /// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
 void EarClipper::update_neighbour(std::uint32_t v) {
-  if (reflex_[v] && b_->turn(v) >= 0) drop_reflex(v);
+  if (reflex_[v] && !pinch_[v] && b_->turn(v) >= 0) drop_reflex(v);
   ++stamp_[v];
 }
 
@@ -207,25 +242,43 @@ bool EarClipper::pop(std::uint32_t& v) {
 }
 
 void EarClipper::clip_ears(std::uint32_t entry) {
+  pending_.clear();
+  anchor_ = entry;
   std::uint32_t last = entry;
   std::uint32_t v = entry;
   do {
     offer(v);
     v = b_->next[v];
   } while (v != entry);
-  while (remaining_ > 3) {
-    if (!pop(v)) {
-      if (!fall_back(live(last))) break;
-      last = touched_;
-      for (std::uint32_t u : {b_->prev[last], last, b_->next[last]}) update_neighbour(u), offer(u);
-      continue;
+  for (;;) {
+    while (remaining_ > 3) {
+      if (!pop(v)) {
+        if (!fall_back(anchor_)) break;
+        last = touched_;
+        for (std::uint32_t u : {b_->prev[last], last, b_->next[last]})
+          update_neighbour(u), offer(u);
+        continue;
+      }
+      const std::uint32_t p = b_->prev[v], n = b_->next[v];
+      clip(v);
+      const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
+      last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
     }
-    const std::uint32_t p = b_->prev[v], n = b_->next[v];
-    clip(v);
-    const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
-    last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
+    if (remaining_ == 3) finish(anchor_);
+    if (pending_.empty()) return;
+    // The next part of a split cycle.
+    const PendingCycle part = pending_.back();
+    pending_.pop_back();
+    remaining_ = part.nodes;
+    anchor_ = part.entry;
+    last = part.entry;
+    v = part.entry;
+    do {
+      ++stamp_[v];
+      offer(v);
+      v = b_->next[v];
+    } while (v != part.entry);
   }
-  if (remaining_ == 3) finish(live(last));
 }
 
 bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
@@ -233,9 +286,10 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   out_ = &out;
   heuristic_ = heuristic;
   best_effort_ = false;
+  split_budget_ = 4'000'000 + 64 * static_cast<std::size_t>(b.size());
   queue_.clear();
   classify(entry);
-  clip_ears(live(entry));
+  if (remaining_ >= 3) clip_ears(live(entry));
   return !best_effort_;
 }
 

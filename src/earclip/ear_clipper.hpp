@@ -32,13 +32,13 @@ class EarClipper {
   void classify(std::uint32_t entry);
   bool is_ear(std::uint32_t v) const;
   bool blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const;
-  bool coincident_blocks(std::uint32_t corner, const Point& wedge_a, const Point& wedge_b,
-                         const Point* diagonal_end, std::uint32_t q) const;
+  bool coincident_blocks(std::uint32_t q, const Point& wedge_a, const Point& wedge_b) const;
   double quality(std::uint32_t v) const;
   double diagonal(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);
+  void mark_pinches();
   void drop_reflex(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
   std::uint32_t settle(std::uint32_t v, bool queue);
@@ -50,6 +50,10 @@ class EarClipper {
   void offer(std::uint32_t v);
   bool pop(std::uint32_t& v);
   bool fall_back(std::uint32_t near);
+  bool split_along_diagonal(std::uint32_t near);
+  void split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part);
+  static constexpr std::size_t split_limit = 512;
+  std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
 
@@ -59,14 +63,23 @@ class EarClipper {
   std::size_t remaining_ = 0;
   bool best_effort_ = false;
   std::uint32_t best_effort_vertex_ = 0;
-  std::uint32_t touched_ = 0;  ///< a live node next to the last fallback's change
+  std::uint32_t touched_ = 0;
+  std::uint32_t anchor_ = 0;  ///< a live node of the cycle being clipped (moved on by remove)  ///<
+                              ///< a live node next to the last fallback's change
   /// Strictly reflex and still on the boundary. Collinear nodes need no hashing: a node inside
   /// an ear's triangle implies a strictly reflex one there too (the node farthest from the
   /// diagonal turns away from it), except for chains along the diagonal, checked at its ends.
   std::vector<std::uint8_t> reflex_;
   std::vector<std::uint8_t> alive_;
+  std::vector<std::uint8_t> pinch_;  ///< shares its position with another node: always hashed
+  std::vector<std::uint32_t> position_table_;
   std::vector<std::uint32_t> stamp_;  ///< bumped when a node's ear status may have changed
   std::vector<std::uint32_t> scratch_;
+  struct PendingCycle {
+    std::uint32_t entry;
+    std::size_t nodes;
+  };
+  std::vector<PendingCycle> pending_;  ///< parts of split cycles still to clip
   EarQueue queue_;
   ReflexGrid grid_;
   bool grid_built_ = false;  ///< spikes are dissolved before the grid exists

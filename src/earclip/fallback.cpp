@@ -1,5 +1,6 @@
 // FIST's fallback cascade for when no ear is left although more than three nodes remain.
 // Each step removes at least one node, so clipping always ends, in at most n steps.
+#include <algorithm>
 #include <cmath>
 
 #include "ear_clipper.hpp"
@@ -14,6 +15,20 @@ bool segments_cross(const Point& a, const Point& b, const Point& c, const Point&
 }
 
 }  // namespace
+
+/// Whether segment a-b meets edge u-w other than in a shared endpoint position.
+bool diagonal_hits_edge(const Point& a, const Point& b, const Point& u, const Point& w) {
+  const double o1 = orient2d(a, b, u), o2 = orient2d(a, b, w);
+  const double o3 = orient2d(u, w, a), o4 = orient2d(u, w, b);
+  const auto opposite = [](double s, double t) { return (s > 0 && t < 0) || (s < 0 && t > 0); };
+  if (opposite(o1, o2) && opposite(o3, o4)) return true;
+  const auto inside = [](const Point& p, const Point& q, const Point& r) {  // p strictly in q-r
+    return !(p == q) && !(p == r) && std::min(q.x, r.x) <= p.x && p.x <= std::max(q.x, r.x) &&
+           std::min(q.y, r.y) <= p.y && p.y <= std::max(q.y, r.y);
+  };
+  return (o1 == 0 && inside(u, a, b)) || (o2 == 0 && inside(w, a, b)) ||
+         (o3 == 0 && inside(a, u, w)) || (o4 == 0 && inside(b, u, w));
+}
 
 /// 1. Degenerate remnants of a valid boundary: a spike that returns to its start (the last bit
 ///    of a lobe of a self-touching ring) or a zero-length edge goes away without a triangle.
@@ -45,6 +60,8 @@ bool EarClipper::fall_back(std::uint32_t near) {
     v = n;
   } while (v != near);
 
+  if (split_along_diagonal(near)) return true;
+
   if (!best_effort_) best_effort_vertex_ = b.vertex[near];
   best_effort_ = true;
   const std::uint32_t chosen = crossing != UINT32_MAX ? crossing : convex;
@@ -56,6 +73,76 @@ bool EarClipper::fall_back(std::uint32_t near) {
     remove(near);
   }
   return remaining_ >= 3;
+}
+
+/// FIST's split: when a valid boundary has no ear left (lobes chained at a pinch point can
+/// hide every ear), cut it along a diagonal that lies inside at both ends and meets no edge,
+/// and clip the two parts one after the other. The search is cubic, so it runs only on cycles
+/// of at most split_limit nodes and within a budget of edge tests per triangulation (bounded
+/// time on inputs that are not simple); beyond that the best-effort steps take over.
+bool EarClipper::split_along_diagonal(std::uint32_t near) {
+  Boundary& b = *b_;
+  if (remaining_ > split_limit) return false;
+  scratch_.clear();
+  std::uint32_t u = near;
+  do {
+    scratch_.push_back(u);
+    u = b.next[u];
+  } while (u != near);
+  const std::size_t m = scratch_.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t j = i + 2; j < m; ++j) {
+      if (i == 0 && j == m - 1) continue;  // neighbours
+      const std::uint32_t a = scratch_[i], c = scratch_[j];
+      const Point &pa = b.pos[a], &pc = b.pos[c];
+      if (pa == pc || !b.sector_contains(a, pc) || !b.sector_contains(c, pa)) continue;
+      if (split_budget_ < m) return false;
+      split_budget_ -= m;
+      bool clear = true;
+      for (std::size_t k = 0; k < m && clear; ++k)
+        clear = !diagonal_hits_edge(pa, pc, b.pos[scratch_[k]], b.pos[b.next[scratch_[k]]]);
+      if (!clear) continue;
+      split_cycle(a, c, j - i + 1);
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Cuts the cycle along a-c: a -> ... -> c -> a is clipped now, copies of a and c close the
+/// other part, which waits on the pending stack.
+void EarClipper::split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part) {
+  Boundary& b = *b_;
+  const std::uint32_t other = remaining_ - first_part + 2;
+  const std::uint32_t a2 = b.copy(a), c2 = b.copy(c);
+  const std::uint32_t before_a = b.prev[a], after_c = b.next[c];
+  b.link(c, a);
+  b.link(before_a, a2);
+  b.link(a2, c2);
+  b.link(c2, after_c);
+  for (auto* flags : {&alive_, &reflex_, &pinch_}) flags->resize(b.size(), 0);
+  stamp_.resize(b.size(), 0);
+  alive_[a2] = alive_[c2] = 1;
+  for (std::uint32_t node : {a, c, a2, c2}) {
+    pinch_[node] = 1;
+    if (!reflex_[node]) reflex_[node] = 1, grid_.add(node, b.pos[node]);
+  }
+  // The waiting part's queued ears must not be popped while the first part is clipped.
+  std::uint32_t u = a2;
+  do {
+    ++stamp_[u];
+    u = b.next[u];
+  } while (u != a2);
+  pending_.push_back({a2, other});
+  remaining_ = first_part;
+  anchor_ = a;
+  touched_ = a;
+  u = a;
+  do {
+    ++stamp_[u];
+    offer(u);
+    u = b.next[u];
+  } while (u != a);
 }
 
 /// The last three nodes form the last triangle, unless they are degenerate.

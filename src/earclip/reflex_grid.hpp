@@ -26,6 +26,7 @@ class ReflexGrid {
   /// Builds the grid over `nodes` (all strictly reflex).
   void build(const Boundary& b, const std::vector<std::uint32_t>& nodes) {
     slot_.resize(b.size());
+    extra_.clear();
     if (nodes.empty()) {
       frame_ = GridFrame{};
       cell_start_.assign(2, 0);
@@ -56,8 +57,23 @@ class ReflexGrid {
     }
   }
 
+  /// Adds a node after the build (the copies a split makes): kept in a short list that every
+  /// query visits, since splits are rare.
+  void add(std::uint32_t node, const Point& pos) {
+    if (slot_.size() <= node) slot_.resize(node + 1);
+    slot_[node] = static_cast<std::uint32_t>(extra_.size()) | extra_bit;
+    extra_.push_back({pos, node});
+  }
+
   /// Takes a node out of the grid (it turned convex or was clipped).
   void remove(std::uint32_t node, const Point& pos) {
+    if (slot_[node] & extra_bit) {
+      const std::uint32_t slot = slot_[node] & ~extra_bit;
+      extra_[slot] = extra_.back();
+      slot_[extra_[slot].node] = slot | extra_bit;
+      extra_.pop_back();
+      return;
+    }
     const std::size_t cell = cell_of(pos);
     const std::uint32_t slot = slot_[node], last = --cell_end_[cell];
     items_[slot] = items_[last];
@@ -87,6 +103,8 @@ class ReflexGrid {
       const int c1 = std::min(frame_.nx - 1, frame_.column(x_hi) + 1);
       if (visit_cells(frame_.cell(c0, r), frame_.cell(c1, r), visit)) return true;
     }
+    for (const Entry& e : extra_)
+      if (visit(e)) return true;
     return false;
   }
 
@@ -140,6 +158,8 @@ class ReflexGrid {
   std::vector<Entry> items_;
   std::vector<std::uint32_t> slot_;      ///< node -> its slot in items_, while it is in the grid
   std::vector<std::uint64_t> occupied_;  ///< one bit per cell: holds a live node
+  std::vector<Entry> extra_;             ///< nodes added after the build
+  static constexpr std::uint32_t extra_bit = 0x80000000u;
 };
 
 }  // namespace pear::detail

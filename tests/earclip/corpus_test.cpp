@@ -115,11 +115,11 @@ void check_polygon(const Polygon& polygon, bool expect_valid, EarHeuristic heuri
   EXPECT_LE(report.area_rel_error, 1e-9);
 }
 
-/// Valid inputs on which the engine still gets stuck (holes touching each other in chains):
-/// it must say so with Status::not_simple rather than return a wrong triangulation silently.
-/// Known limitation, tracked in the closing note of the engine issue.
+/// A valid input on which the engine still gets stuck (many holes touching each other and the
+/// outer ring in chains): it must say so with Status::not_simple rather than return a wrong
+/// triangulation silently. Known limitation, tracked in the closing note of the engine issue.
 bool known_stuck(const std::string& name) {
-  return name.ends_with("touching-holes4.json") || name.ends_with("water-huge3.json");
+  return name.ends_with("water-huge3.json");
 }
 
 void check_known_stuck(const Polygon& polygon, EarHeuristic heuristic) {

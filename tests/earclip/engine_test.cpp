@@ -99,6 +99,20 @@ TEST_P(Engine, HolesTouchingEachOther) {
   expect_valid(p, GetParam(), "touching holes");
 }
 
+TEST_P(Engine, RegressionFanOfHolesTouchingAtOnePoint) {
+  // earcut's touching-holes4: 26 thin triangular holes meeting at one point left lobes chained
+  // at that point whose local sectors overlap; the ear test then blocked every ear.
+  Polygon p = {{{-20, 0}, {20, 0}, {20, 25}, {-20, 25}}};
+  for (int k = 0; k < 9; ++k) p.push_back({{2, 12}, {-1.0 - 2 * k, 23}, {-2.0 * k, 23}});
+  expect_valid(p, GetParam(), "fan of touching holes");
+}
+
+TEST_P(Engine, TwoHolesTouchingEachOtherInside) {
+  const Polygon p = {
+      {{0, 0}, {10, 0}, {10, 10}}, {{1, 0.5}, {3, 1.5}, {4, 1}}, {{1, 0.5}, {5, 4}, {6, 5.5}}};
+  expect_valid(p, GetParam(), "two holes touching inside");
+}
+
 TEST_P(Engine, SelfTouchingRingFigureEight) {
   // Two lobes meeting at (2, 2): the ring visits that point twice.
   const Ring r = {{0, 0}, {2, 2}, {4, 0}, {4, 4}, {2, 2}, {0, 4}};
