@@ -2,6 +2,7 @@
 // occurrence of a vertex on the boundary; bridges and splits make several nodes of one vertex.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -9,6 +10,13 @@
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
+
+/// For p collinear with segment a-b: whether p lies strictly between its endpoints.
+inline bool on_open_segment(const Point& p, const Point& a, const Point& b) {
+  if (p == a || p == b) return false;
+  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
+         p.y <= std::max(a.y, b.y);
+}
 
 struct Boundary {
   std::vector<Point> pos;             ///< position of each node (copied for locality)

@@ -7,13 +7,6 @@
 namespace pear::detail {
 namespace {
 
-/// p lies on segment a-b (given collinear) strictly between its endpoints.
-bool on_open_segment(const Point& p, const Point& a, const Point& b) {
-  if (p == a || p == b) return false;
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
-}
-
 Point min_corner(const Point& a, const Point& b, const Point& c) {
   return {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
 }

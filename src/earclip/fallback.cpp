@@ -22,12 +22,8 @@ bool diagonal_hits_edge(const Point& a, const Point& b, const Point& u, const Po
   const double o3 = orient2d(u, w, a), o4 = orient2d(u, w, b);
   const auto opposite = [](double s, double t) { return (s > 0 && t < 0) || (s < 0 && t > 0); };
   if (opposite(o1, o2) && opposite(o3, o4)) return true;
-  const auto inside = [](const Point& p, const Point& q, const Point& r) {  // p strictly in q-r
-    return !(p == q) && !(p == r) && std::min(q.x, r.x) <= p.x && p.x <= std::max(q.x, r.x) &&
-           std::min(q.y, r.y) <= p.y && p.y <= std::max(q.y, r.y);
-  };
-  return (o1 == 0 && inside(u, a, b)) || (o2 == 0 && inside(w, a, b)) ||
-         (o3 == 0 && inside(a, u, w)) || (o4 == 0 && inside(b, u, w));
+  return (o1 == 0 && on_open_segment(u, a, b)) || (o2 == 0 && on_open_segment(w, a, b)) ||
+         (o3 == 0 && on_open_segment(a, u, w)) || (o4 == 0 && on_open_segment(b, u, w));
 }
 
 /// 1. Degenerate remnants of a valid boundary: a spike that returns to its start (the last bit

@@ -1,5 +1,7 @@
 #include "simplicity.hpp"
 
+#include "boundary.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -7,13 +9,6 @@
 
 namespace pear::detail {
 namespace {
-
-/// p lies on segment a-b (given collinear) strictly between its endpoints.
-bool inside_segment(const Point& p, const Point& a, const Point& b) {
-  if (p == a || p == b) return false;
-  return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y &&
-         p.y <= std::max(a.y, b.y);
-}
 
 bool opposite(double s, double t) {
   return (s > 0 && t < 0) || (s < 0 && t > 0);
@@ -34,12 +29,12 @@ bool SimplicityCheck::edges_conflict(std::uint32_t e, std::uint32_t f) const {
   if (opposite(o1, o2)) {
     const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
     if (opposite(o3, o4)) return true;
-    if ((o3 == 0 && inside_segment(a, c, d)) || (o4 == 0 && inside_segment(b, c, d))) return true;
+    if ((o3 == 0 && on_open_segment(a, c, d)) || (o4 == 0 && on_open_segment(b, c, d))) return true;
     return false;
   }
-  if ((o1 == 0 && inside_segment(c, a, b)) || (o2 == 0 && inside_segment(d, a, b))) return true;
+  if ((o1 == 0 && on_open_segment(c, a, b)) || (o2 == 0 && on_open_segment(d, a, b))) return true;
   if (o1 == 0 && o2 == 0) {
-    if (inside_segment(a, c, d) || inside_segment(b, c, d)) return true;
+    if (on_open_segment(a, c, d) || on_open_segment(b, c, d)) return true;
     return (a == c && b == d) || (a == d && b == c);
   }
   return false;
@@ -54,8 +49,8 @@ bool SimplicityCheck::pair_conflicts(std::uint32_t e, std::uint32_t f) const {
   const std::uint32_t shared = next_[e] == f ? f : e;
   const std::uint32_t before = shared == f ? e : f, after = next_[shared];
   return orient2d(pts[before], pts[shared], pts[after]) == 0 &&
-         (inside_segment(pts[before], pts[shared], pts[after]) ||
-          inside_segment(pts[after], pts[before], pts[shared]) || pts[before] == pts[after]);
+         (on_open_segment(pts[before], pts[shared], pts[after]) ||
+          on_open_segment(pts[after], pts[before], pts[shared]) || pts[before] == pts[after]);
 }
 
 std::optional<std::uint32_t> SimplicityCheck::find_violation(const CleanPolygon& polygon,
