@@ -4,12 +4,18 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "pear/geometry.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
+
+/// x first, then y: the sweep order of the bridges and the simplicity check.
+inline bool lexicographic_less(const Point& a, const Point& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
 
 /// For p collinear with segment a-b: whether p lies strictly between its endpoints.
 inline bool on_open_segment(const Point& p, const Point& a, const Point& b) {
@@ -44,6 +50,20 @@ struct Boundary {
     prev[b] = a;
   }
   void unlink(std::uint32_t node) { link(prev[node], next[node]); }
+
+  /// Adds the diagonal from -> to as a doubled edge: from's old successor moves to a copy of
+  /// from, to's old predecessor to a copy of to. Between two cycles this joins them (a bridge
+  /// to a hole); within one cycle it splits it in two (to -> ... -> from -> to, and the copies).
+  /// Returns the copies {of from, of to}.
+  std::pair<std::uint32_t, std::uint32_t> add_diagonal(std::uint32_t from, std::uint32_t to) {
+    const std::uint32_t from_copy = copy(from), to_copy = copy(to);
+    const std::uint32_t after_from = next[from], before_to = prev[to];
+    link(from, to);
+    link(before_to, to_copy);
+    link(to_copy, from_copy);
+    link(from_copy, after_from);
+    return {from_copy, to_copy};
+  }
 
   /// Turn at `node`: > 0 convex, < 0 reflex, 0 collinear (exact).
   double turn(std::uint32_t node) const {

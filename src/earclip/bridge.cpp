@@ -4,12 +4,6 @@
 #include <limits>
 
 namespace pear::detail {
-namespace {
-bool lexicographic_less(const Point& a, const Point& b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
-}  // namespace
-
 std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary) {
   std::vector<std::uint32_t> unjoined;
   const std::size_t rings = polygon.ring_count();
@@ -171,12 +165,7 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
 
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
-  const std::uint32_t target_copy = b.copy(target), hole_copy = b.copy(hole);
-  const std::uint32_t after_target = b.next[target], before_hole = b.prev[hole];
-  b.link(target, hole);
-  b.link(before_hole, hole_copy);
-  b.link(hole_copy, target_copy);
-  b.link(target_copy, after_target);
+  const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
   out_edge_.resize(b.size(), UINT32_MAX);
   const std::uint32_t old_edge = out_edge_[target];

@@ -110,12 +110,7 @@ bool EarClipper::split_along_diagonal(std::uint32_t near) {
 void EarClipper::split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part) {
   Boundary& b = *b_;
   const std::uint32_t other = remaining_ - first_part + 2;
-  const std::uint32_t a2 = b.copy(a), c2 = b.copy(c);
-  const std::uint32_t before_a = b.prev[a], after_c = b.next[c];
-  b.link(c, a);
-  b.link(before_a, a2);
-  b.link(a2, c2);
-  b.link(c2, after_c);
+  const auto [c2, a2] = b.add_diagonal(c, a);
   for (auto* flags : {&alive_, &reflex_, &pinch_}) flags->resize(b.size(), 0);
   stamp_.resize(b.size(), 0);
   alive_[a2] = alive_[c2] = 1;

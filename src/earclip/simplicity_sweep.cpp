@@ -5,15 +5,12 @@
 #include <algorithm>
 #include <set>
 
+#include "boundary.hpp"
 #include "pear/predicates.hpp"
 #include "simplicity.hpp"
 
 namespace pear::detail {
 namespace {
-
-bool lexicographic_less(const Point& a, const Point& b) {
-  return a.x < b.x || (a.x == b.x && a.y < b.y);
-}
 
 struct Segment {
   Point left, right;
