@@ -18,16 +18,24 @@
 #include <limits>
 #include <memory>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "pear/geometry.hpp"
 
 namespace pear {
 
-/// Which triangulation algorithm to run.
+class Executor;  // pear/scheduler.hpp
+
+/// Which triangulation algorithm to run. Every algorithm gives a valid triangulation of the same
+/// polygon; they differ in speed, in the triangles' shapes, and in how they use threads.
 enum class Algorithm : std::uint8_t {
-  automatic,   ///< pear picks (the sequential engine for now)
-  sequential,  ///< the sequential FIST-style ear clipper
+  automatic,           ///< pear picks by size and thread count (see README "Which algorithm")
+  sequential,          ///< the sequential FIST-style ear clipper
+  partition_and_cut,   ///< paper §2.2: k chains clipped in parallel, each with its own queue
+  mark_and_cut,        ///< paper §2.3: rounds of clipping every second ear in parallel
+  divide_and_conquer,  ///< paper §2.1: vertical split lines, sub-polygons in parallel, Steiner
+                       ///< points removed again
 };
 
 /// How the sequential engine chooses the next ear.
@@ -43,6 +51,46 @@ struct Options {
   /// inside another edge; a violation gives Status::not_simple and names the place. Without
   /// the check, such input may come back as Status::ok with a triangulation that is not valid.
   bool check_simplicity = true;
+  /// Turn the triangulation into the constrained Delaunay triangulation of the polygon by exact
+  /// edge flips (paper §2.4); in parallel when the algorithm is a parallel one.
+  bool delaunay = false;
+  /// Threads for the parallel algorithms: 0 = the executor's concurrency (pear's default
+  /// executor: all hardware threads), 1 = run everything on the calling thread.
+  unsigned threads = 0;
+  /// How many parts the parallel algorithms cut the work into: 0 = the thread count. The output
+  /// depends on the algorithm, the options and this number, never on the threads or their
+  /// timing: fix it to get bit-identical results on any machine.
+  unsigned partitions = 0;
+  /// Where parallel work runs; nullptr = pear's default executor (or a private one with
+  /// `threads` threads when that differs from the default's concurrency).
+  Executor* executor = nullptr;
+  /// When set, filled with the time of every task of every phase (see RunProfile).
+  struct RunProfile* profile = nullptr;
+};
+
+/// Per-phase task times of one run, for work/span analysis: a phase's tasks run in parallel,
+/// phases run one after another. Sequential phases have one task.
+struct RunProfile {
+  struct Phase {
+    std::string name;
+    std::vector<double> task_seconds;
+  };
+  std::vector<Phase> phases;
+  /// Total work: the time on one thread.
+  double work() const;
+  /// Critical path: the sum over phases of each phase's longest task.
+  double span() const;
+  /// The time on `threads` threads by Brent's bound per phase, max(sum/threads, longest task)
+  /// summed over phases (greedy scheduling does at most 2x worse, usually close to this).
+  double projected(unsigned threads) const;
+};
+
+/// What the constrained Delaunay conversion did (Options::delaunay).
+struct DelaunayStatistics {
+  std::size_t edges = 0;              ///< interior edges that are not constraints
+  std::size_t flips = 0;              ///< all flips
+  std::size_t flips_in_partitions = 0;  ///< flips done by the parallel tasks
+  std::size_t flips_on_borders = 0;   ///< flips in the fix-up across partition borders
 };
 
 /// Ear statistics of a polygon's (bridged) boundary before clipping: the paper's Fig. 7 numbers.
@@ -58,6 +106,7 @@ struct Triangulation {
   std::vector<std::array<Index, 3>> triangles;
   Status status = Status::ok;
   std::vector<Diagnostic> diagnostics;
+  DelaunayStatistics delaunay;  ///< filled when Options::delaunay was set
 };
 
 namespace detail {
@@ -108,7 +157,7 @@ class Triangulator {
       result.diagnostics.push_back({Issue::index_overflow, 0, 0});
       return result;
     }
-    result.status = run(options, result.diagnostics);
+    result.status = run(options, result.diagnostics, result.delaunay);
     convert<Index>(result);
     return result;
   }
@@ -121,7 +170,8 @@ class Triangulator {
   }
 
  private:
-  Status run(const Options& options, std::vector<Diagnostic>& diagnostics);
+  Status run(const Options& options, std::vector<Diagnostic>& diagnostics,
+             DelaunayStatistics& delaunay);
   EarStatistics run_statistics();
 
   template <class Index>
@@ -142,6 +192,7 @@ class Triangulator {
   detail::FlatPolygon flat_;
   std::vector<std::array<std::uint32_t, 3>> triangles_;
   std::unique_ptr<detail::Engine> engine_;
+  std::unique_ptr<Executor> private_executor_;  ///< for Options::threads without an executor
 };
 
 /// Triangulates a polygon given as a range of rings (outer first, then holes).

@@ -2,7 +2,22 @@
 
 #include <algorithm>
 
+#include "../cdt/delaunay.hpp"
+#include "../parallel/variants.hpp"
+
 namespace pear::detail {
+namespace {
+
+/// Below this many boundary nodes the parallel variants do not pay (measured: docs/benchmarks.md).
+constexpr std::size_t parallel_threshold = 20'000;
+
+Algorithm resolve(Algorithm requested, std::size_t nodes, const ParallelContext& ctx) {
+  if (requested != Algorithm::automatic) return requested;
+  return ctx.parallel() && nodes >= parallel_threshold ? Algorithm::partition_and_cut
+                                                       : Algorithm::sequential;
+}
+
+}  // namespace
 
 Diagnostic Engine::locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const {
   const auto ring_end =
@@ -11,48 +26,83 @@ Diagnostic Engine::locate(const FlatPolygon& input, Issue issue, std::uint32_t c
   return {issue, ring, caller_index - input.ring_starts[ring]};
 }
 
-bool Engine::prepare(const FlatPolygon& input, bool check_simplicity,
+bool Engine::prepare(const FlatPolygon& input, bool check_simplicity, const ParallelContext& ctx,
                      std::vector<Diagnostic>& diagnostics, Status& status) {
-  status = clean_polygon(input, clean_, diagnostics);
+  ctx.run_serial("clean", [&] { status = clean_polygon(input, clean_, diagnostics); });
   if (status != Status::ok) return false;
   if (check_simplicity) {
-    if (const auto vertex = simplicity_.find_violation(clean_)) {
-      diagnostics.push_back(locate(input, Issue::not_simple, clean_.original[*vertex]));
+    std::optional<std::uint32_t> violation;
+    ctx.run_serial("check simplicity", [&] { violation = simplicity_.find_violation(clean_); });
+    if (violation) {
+      diagnostics.push_back(locate(input, Issue::not_simple, clean_.original[*violation]));
       status = Status::not_simple;
     }
   }
-  boundary_.clear();
-  for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
-    const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
-    for (std::uint32_t i = first; i <= last; ++i)
-      boundary_.add(clean_.points[i], clean_.original[i]);
-    for (std::uint32_t i = first; i < last; ++i) boundary_.link(i, i + 1);
-    boundary_.link(last, first);
-  }
-  for (std::uint32_t hole : bridger_.join(clean_, boundary_)) {
+  std::vector<std::uint32_t> unjoined;
+  ctx.run_serial("bridge holes", [&] {
+    boundary_.clear();
+    for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
+      const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
+      for (std::uint32_t i = first; i <= last; ++i)
+        boundary_.add(clean_.points[i], clean_.original[i]);
+      for (std::uint32_t i = first; i < last; ++i) boundary_.link(i, i + 1);
+      boundary_.link(last, first);
+    }
+    unjoined = bridger_.join(clean_, boundary_);
+  });
+  for (std::uint32_t hole : unjoined) {
     diagnostics.push_back(locate(input, Issue::not_simple, boundary_.vertex[hole]));
     status = Status::not_simple;
   }
   return true;
 }
 
-Status Engine::triangulate(const FlatPolygon& input, const Options& options, TriangleList& out,
-                           std::vector<Diagnostic>& diagnostics) {
+bool Engine::clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+                  TriangleList& out, std::uint32_t& best_effort_vertex) {
+  std::uint32_t rest = 0;
+  switch (algorithm) {
+    case Algorithm::divide_and_conquer:
+      return divide_and_conquer(boundary_, 0, ctx, out, best_effort_vertex);
+    case Algorithm::partition_and_cut:
+      rest = partition_and_cut(boundary_, 0, ctx, out);
+      break;
+    case Algorithm::mark_and_cut:
+      rest = mark_and_cut(boundary_, 0, ctx, out);
+      break;
+    default:
+      break;
+  }
+  if (rest == no_node) return true;
+  bool complete = true;
+  ctx.run_serial("clip sequentially",
+                 [&] { complete = clipper_.run(boundary_, rest, options.heuristic, out); });
+  best_effort_vertex = clipper_.best_effort_vertex();
+  return complete;
+}
+
+Status Engine::triangulate(const FlatPolygon& input, const Options& options,
+                           const ParallelContext& ctx, TriangleList& out,
+                           std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   out.clear();
   Status status;
-  if (!prepare(input, options.check_simplicity, diagnostics, status)) return status;
+  if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;
   out.reserve(boundary_.size());
-  if (!clipper_.run(boundary_, 0, options.heuristic, out) && status == Status::ok) {
-    diagnostics.push_back(locate(input, Issue::not_simple, clipper_.best_effort_vertex()));
+  const Algorithm algorithm = resolve(options.algorithm, boundary_.size(), ctx);
+  std::uint32_t best_effort_vertex = 0;
+  if (!clip(algorithm, options, ctx, out, best_effort_vertex) && status == Status::ok) {
+    diagnostics.push_back(locate(input, Issue::not_simple, best_effort_vertex));
     status = Status::not_simple;
   }
+  // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
+  if (options.delaunay && status == Status::ok)
+    make_delaunay(input.points, clean_, out, ctx, delaunay);
   return status;
 }
 
 EarStatistics Engine::statistics(const FlatPolygon& input) {
   std::vector<Diagnostic> ignored;
   Status status;
-  if (!prepare(input, false, ignored, status)) return {};
+  if (!prepare(input, false, ParallelContext{}, ignored, status)) return {};
   return clipper_.statistics(boundary_, 0);
 }
 

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "../parallel/context.hpp"
 #include "bridge.hpp"
 #include "clean.hpp"
 #include "ear_clipper.hpp"
@@ -12,14 +13,18 @@ namespace pear::detail {
 
 class Engine {
  public:
-  Status triangulate(const FlatPolygon& input, const Options& options, TriangleList& out,
-                     std::vector<Diagnostic>& diagnostics);
+  Status triangulate(const FlatPolygon& input, const Options& options,
+                     const ParallelContext& ctx, TriangleList& out,
+                     std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   EarStatistics statistics(const FlatPolygon& input);
 
  private:
   /// Cleans and bridges; returns false when nothing can be triangulated.
-  bool prepare(const FlatPolygon& input, bool check_simplicity,
+  bool prepare(const FlatPolygon& input, bool check_simplicity, const ParallelContext& ctx,
                std::vector<Diagnostic>& diagnostics, Status& status);
+  /// Clips the prepared boundary with `algorithm`; false when a best-effort fallback acted.
+  bool clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+            TriangleList& out, std::uint32_t& best_effort_vertex);
   Diagnostic locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const;
 
   CleanPolygon clean_;

@@ -1,0 +1,19 @@
+// Constrained Delaunay triangulation by exact edge flips (paper §2.4), sequential and parallel.
+#pragma once
+
+#include <span>
+
+#include "../earclip/clean.hpp"
+#include "../earclip/ear_clipper.hpp"
+#include "../parallel/context.hpp"
+
+namespace pear::detail {
+
+/// Flips the triangulation `triangles` of the polygon `polygon` (triangles index the caller's
+/// points, `points`) into the polygon's constrained Delaunay triangulation. The constraints are
+/// the polygon's ring edges; bridges and other diagonals are not. Runs in parallel when
+/// ctx.parallel(); the result depends on ctx.partitions at most through cocircular ties.
+void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
+                   TriangleList& triangles, const ParallelContext& ctx, DelaunayStatistics& stats);
+
+}  // namespace pear::detail
