@@ -115,9 +115,8 @@ class ExitCodes(Files):
             (["triangulate"], "needs at least one FILE"),
             (["triangulate", "--bogus", SOUTH_AFRICA], "unknown option --bogus"),
             (["triangulate", "--algorithm", "fastest", SOUTH_AFRICA], "unknown algorithm 'fastest'"),
-            (["triangulate", "--algorithm", "mark-and-cut", SOUTH_AFRICA],
-             "algorithm mark-and-cut is not available in this build"),
-            (["triangulate", "--cdt", SOUTH_AFRICA], "--cdt is not available in this build"),
+            (["triangulate", "--cdt=yes", SOUTH_AFRICA], "--cdt takes no value"),
+            (["triangulate", "--partitions", "0", SOUTH_AFRICA], "--partitions expects an integer"),
             (["triangulate", "--threads", "0", SOUTH_AFRICA], "--threads expects an integer"),
             (["triangulate", "-o", "out.xyz", SOUTH_AFRICA], "cannot tell the format"),
             (["triangulate", "-o", "out.svg", SOUTH_AFRICA, SOUTH_AFRICA], "-o FILE takes one input"),
@@ -149,6 +148,36 @@ class ExitCodes(Files):
         r = pear("triangulate", "--help")
         for name in ["auto", "sequential", "mark-and-cut", "partition-and-cut", "divide-and-conquer"]:
             self.assertIn(name, r.stdout)
+
+
+class Algorithms(Files):
+    def test_every_algorithm_thread_count_and_cdt_is_valid(self):
+        vertices, holes = manifest_row("countries", "south_africa_000.json")
+        for algorithm in ["auto", "sequential", "partition-and-cut", "mark-and-cut",
+                          "divide-and-conquer"]:
+            for threads in ["1", "2", "3"]:
+                for cdt in [[], ["--cdt"]]:
+                    with self.subTest(algorithm=algorithm, threads=threads, cdt=cdt):
+                        r = pear("triangulate", SOUTH_AFRICA, "--stats", "--validate",
+                                 "--algorithm", algorithm, "--threads", threads, *cdt)
+                        self.assertEqual(r.returncode, 0, r.stderr)
+                        [line] = stats_lines(r)
+                        self.assertIs(line["valid"], True)
+                        self.assertEqual(line["threads"], int(threads))
+                        self.assertIs(line["cdt"], bool(cdt))
+                        self.assertEqual(line["triangles"], vertices + 2 * holes - 2)
+
+    def test_output_depends_on_partitions_not_threads(self):
+        outputs = []
+        for threads in ["1", "2", "4"]:
+            out = os.path.join(self.dir.name, "sa-" + threads + ".obj")
+            r = pear("triangulate", SOUTH_AFRICA, "--algorithm", "partition-and-cut",
+                     "--partitions", "3", "--threads", threads, "-o", out)
+            self.assertEqual(r.returncode, 0, r.stderr)
+            with open(out) as f:
+                outputs.append(f.read())
+        self.assertEqual(outputs[0], outputs[1])
+        self.assertEqual(outputs[0], outputs[2])
 
 
 class Outputs(Files):

@@ -53,13 +53,16 @@ void Args::unknown() const {
 }
 
 namespace {
-// The one table of algorithm names. Later issues fill in the parallel variants' enum values.
+// The one table of algorithm names.
 constexpr AlgorithmName names[] = {
-    {"auto", Algorithm::automatic, "let pear choose (the sequential engine for now)"},
+    {"auto", Algorithm::automatic, "sequential for small polygons, else partition-and-cut"},
     {"sequential", Algorithm::sequential, "FIST-style ear clipping on one thread"},
-    {"mark-and-cut", std::nullopt, "parallel: mark independent ears, clip them in rounds"},
-    {"partition-and-cut", std::nullopt, "parallel: cut the polygon into parts, clip each"},
-    {"divide-and-conquer", std::nullopt, "parallel: split by diagonals recursively"},
+    {"partition-and-cut", Algorithm::partition_and_cut,
+     "parallel: chains between landmarks, each clipped by its own task"},
+    {"mark-and-cut", Algorithm::mark_and_cut,
+     "parallel: rounds of clipping every second ear at once"},
+    {"divide-and-conquer", Algorithm::divide_and_conquer,
+     "parallel: vertical split lines, parts clipped in parallel, Steiner points removed"},
 };
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include "json_line.hpp"
 #include "output.hpp"
 #include "pear/quality.hpp"
+#include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
 
 namespace pear::cli {
@@ -17,8 +18,6 @@ namespace {
 struct Settings {
   std::string algorithm_name = "auto";
   Options options;
-  std::size_t threads = 1;
-  bool cdt = false;
   bool validate = false;
   bool stats = false;
   io::ReadOptions read;
@@ -40,9 +39,12 @@ quoted globs are expanded.
 
 options:
   --algorithm NAME    which triangulation algorithm (default auto):
-%s  --threads N         threads for the parallel algorithms (default 1; recorded in --stats)
-  --heuristic top|fast  ear order: best-shaped ear first (top, default) or boundary order
-  --cdt               make the triangulation constrained Delaunay [not in this build]
+%s  --threads N         threads for the parallel algorithms (default: all hardware threads)
+  --partitions K      parts the parallel algorithms cut the work into (default: the thread
+                      count); the output depends on K, never on the threads
+  --heuristic top|fast  ear order: best-shaped ear first (top, default) or shortest diagonal
+  --cdt               make the triangulation constrained Delaunay (exact edge flips); with
+                      --validate, every interior edge is checked to be locally Delaunay
   --validate          check every result with pear's independent validator
   --stats             print one JSON object per polygon on stdout: file, index, vertices,
                       holes, triangles, status, algorithm, threads, cdt, ms (triangulation
@@ -73,14 +75,16 @@ Settings parse(std::span<const std::string_view> arguments) {
       s.algorithm_name = args.value();
       s.options.algorithm = parse_algorithm(s.algorithm_name);
     } else if (option == "--threads") {
-      s.threads = args.integer(1, 4096);
+      s.options.threads = static_cast<unsigned>(args.integer(1, 4096));
+    } else if (option == "--partitions") {
+      s.options.partitions = static_cast<unsigned>(args.integer(1, 65536));
     } else if (option == "--heuristic") {
       const std::string_view h = args.value();
       if (h != "top" && h != "fast") throw UsageError("--heuristic expects top or fast");
       s.options.heuristic = h == "top" ? EarHeuristic::top : EarHeuristic::fast;
     } else if (option == "--cdt") {
       args.no_value();
-      throw UsageError("--cdt is not available in this build");
+      s.options.delaunay = true;
     } else if (option == "--validate" || option == "--stats" || option == "--keep-small-rings") {
       args.no_value();
       (option == "--validate" ? s.validate
@@ -98,6 +102,10 @@ Settings parse(std::span<const std::string_view> arguments) {
   if (s.inputs.empty()) throw UsageError("triangulate needs at least one FILE (or '-' for stdin)");
   if (s.output == "-" && s.stats) throw UsageError("-o - and --stats would both write to stdout");
   return s;
+}
+
+std::size_t thread_count(const Options& options) {
+  return options.threads ? options.threads : default_executor().concurrency();
 }
 
 struct Totals {
@@ -136,11 +144,14 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
     line.add("file", file).add("index", index).add("vertices", vertices);
     line.add("holes", polygon.empty() ? std::size_t{0} : polygon.size() - 1);
     line.add("triangles", result.triangles.size()).add("status", to_string(result.status));
-    line.add("algorithm", s.algorithm_name).add("threads", s.threads).add("cdt", s.cdt);
+    line.add("algorithm", s.algorithm_name).add("threads", thread_count(s.options));
+    line.add("cdt", s.options.delaunay);
     line.add("ms", ms).add("min_angle_avg_deg", q.min_angle_avg_deg);
     line.add("dev60_avg_deg", q.dev60_avg_deg);
     if (s.validate) {
-      const ValidationReport report = pear::validate(flat, result.triangles);
+      ValidateOptions check;
+      check.check_delaunay = s.options.delaunay;
+      const ValidationReport report = pear::validate(flat, result.triangles, check);
       line.add("valid", report.valid).add("area_rel_error", report.area_rel_error);
       if (!report.valid && result.status == Status::ok) {
         totals.invalid = true;
