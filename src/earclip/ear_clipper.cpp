@@ -1,21 +1,12 @@
 #include "ear_clipper.hpp"
 
+#include "ear_test.hpp"
+#include "pinches.hpp"
+
 #include <algorithm>
-#include <bit>
 #include <cmath>
 
 namespace pear::detail {
-namespace {
-
-Point min_corner(const Point& a, const Point& b, const Point& c) {
-  return {std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y})};
-}
-Point max_corner(const Point& a, const Point& b, const Point& c) {
-  return {std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y})};
-}
-
-}  // namespace
-
 void EarClipper::classify(std::uint32_t entry) {
   Boundary& b = *b_;
   reflex_.assign(b.size(), 0);
@@ -50,40 +41,8 @@ void EarClipper::classify(std::uint32_t entry) {
   grid_built_ = true;
 }
 
-/// Nodes that share their position with another live node (bridge ends, rings touching at a
-/// vertex): they stay hashed whatever their angle, since a convex one at an ear's corner can
-/// still reach into the ear (the strictly-reflex argument does not cover a chain that touches
-/// a corner). Found with a hash table on the exact coordinates.
 void EarClipper::mark_pinches() {
-  const Boundary& b = *b_;
-  pinch_.assign(b.size(), 0);
-  std::size_t capacity = 16;
-  while (capacity < 2 * static_cast<std::size_t>(remaining_)) capacity *= 2;
-  position_table_.assign(capacity, UINT32_MAX);
-  const auto key = [&](const Point& p) {
-    const std::uint64_t x = std::bit_cast<std::uint64_t>(p.x + 0.0);  // -0 and +0 alike
-    const std::uint64_t y = std::bit_cast<std::uint64_t>(p.y + 0.0);
-    // splitmix64's finalizer: integer coordinates have all-zero low mantissa bits, so the
-    // table index must depend on every bit.
-    std::uint64_t h = x ^ (y * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
-    h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-    h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-    return h ^ (h >> 31);
-  };
-  for (std::uint32_t u = 0; u < b.size(); ++u) {
-    if (!alive_[u]) continue;
-    for (std::size_t slot = key(b.pos[u]) & (capacity - 1);; slot = (slot + 1) & (capacity - 1)) {
-      const std::uint32_t other = position_table_[slot];
-      if (other == UINT32_MAX) {
-        position_table_[slot] = u;
-        break;
-      }
-      if (b.pos[other] == b.pos[u]) {
-        pinch_[u] = pinch_[other] = 1;
-        break;
-      }
-    }
-  }
+  find_pinches(*b_, alive_, remaining_, pinch_, position_table_);
 }
 
 void EarClipper::remove(std::uint32_t v) {
@@ -130,60 +89,8 @@ std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
   return v;
 }
 
-/// Whether reflex node q spoils the ear (p, v, n). Strictly inside always does; on the
-/// triangle's boundary it does when its edges reach into the triangle (paper Fig. 1(b), and
-/// FIST's handling of the coincident nodes that bridges and touching rings create).
-bool EarClipper::blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const {
-  const Boundary& b = *b_;
-  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n], &x = b.pos[q];
-  const double o1 = orient2d(a, t, x);
-  if (o1 < 0) return false;
-  const double o2 = orient2d(t, c, x);
-  if (o2 < 0) return false;
-  const double o3 = orient2d(c, a, x);
-  if (o3 < 0) return false;
-  if (o1 > 0 && o2 > 0 && o3 > 0) return true;
-  if (x == a) return coincident_blocks(q, t, c);
-  if (x == c) return coincident_blocks(q, a, t);
-  if (x == t) return coincident_blocks(q, c, a);
-  if (o3 == 0) return true;  // on the open diagonal
-  const Point &qp = b.pos[b.prev[q]], &qn = b.pos[b.next[q]];
-  if (o1 == 0) return orient2d(a, t, qp) > 0 || orient2d(a, t, qn) > 0;
-  return orient2d(t, c, qp) > 0 || orient2d(t, c, qn) > 0;
-}
-
-/// q sits exactly on a corner of the ear; the corner's wedge is bounded by the rays towards
-/// wedge_a and wedge_b. q spoils the ear if one of its edges runs into the wedge. (Whether the
-/// diagonal runs into q's own sector need not be asked: in a valid boundary that would put the
-/// corner's own edge into the wedge, and a strictly reflex node into the triangle. Asking it
-/// blocked every ear of lobes chained at one point, whose local sectors overlap.)
-bool EarClipper::coincident_blocks(std::uint32_t q, const Point& wedge_a,
-                                   const Point& wedge_b) const {
-  const Boundary& b = *b_;
-  const Point& corner = b.pos[q];
-  const auto in_wedge = [&](const Point& y) {
-    return orient2d(corner, wedge_a, y) > 0 && orient2d(wedge_b, corner, y) > 0;
-  };
-  return in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]]);
-}
-
 bool EarClipper::is_ear(std::uint32_t v) const {
-  const Boundary& b = *b_;
-  const std::uint32_t p = b.prev[v], n = b.next[v];
-  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
-  if (!(orient2d(a, t, c) > 0)) return false;
-  // A boundary edge running along the diagonal from one of its ends (a collinear chain that
-  // the grid does not hold) makes the diagonal touch the boundary.
-  const Point &before = b.pos[b.prev[p]], &after = b.pos[b.next[n]];
-  if (orient2d(a, c, after) == 0 && on_open_segment(after, a, c)) return false;
-  if (orient2d(a, c, before) == 0 && on_open_segment(before, a, c)) return false;
-  const Point lo = min_corner(a, t, c), hi = max_corner(a, t, c);
-  return !grid_.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
-    const Point& x = e.pos;
-    if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
-    if (e.node == p || e.node == v || e.node == n) return false;
-    return blocks(p, v, n, e.node);
-  });
+  return detail::is_ear(*b_, grid_, AllLinks{}, v, [](std::uint32_t) { return true; });
 }
 
 /// FIST's "top": ears closer to equilateral first. Twice the area over the sum of the squared

@@ -31,8 +31,6 @@ class EarClipper {
  private:
   void classify(std::uint32_t entry);
   bool is_ear(std::uint32_t v) const;
-  bool blocks(std::uint32_t p, std::uint32_t v, std::uint32_t n, std::uint32_t q) const;
-  bool coincident_blocks(std::uint32_t q, const Point& wedge_a, const Point& wedge_b) const;
   double quality(std::uint32_t v) const;
   double diagonal(std::uint32_t v) const;
   void clip(std::uint32_t v);

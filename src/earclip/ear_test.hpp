@@ -1,0 +1,79 @@
+// The ear test (paper §1.1, FIST's handling of coincident nodes), shared by the sequential
+// clipper and the parallel variants. `Links` says whose links may be read: a parallel task
+// reads only the links of nodes it owns, and counts any other node on the triangle's boundary
+// as blocking, which only ever rejects an ear (never accepts a wrong one).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+
+#include "boundary.hpp"
+#include "reflex_grid.hpp"
+
+namespace pear::detail {
+
+/// Every node's links may be read (one thread owns the whole boundary).
+struct AllLinks {
+  bool readable(std::uint32_t) const { return true; }
+};
+
+/// q sits exactly on a corner of the ear; the corner's wedge is bounded by the rays towards
+/// wedge_a and wedge_b. q spoils the ear if one of its edges runs into the wedge. (Whether the
+/// diagonal runs into q's own sector need not be asked: in a valid boundary that would put the
+/// corner's own edge into the wedge, and a strictly reflex node into the triangle. Asking it
+/// blocked every ear of lobes chained at one point, whose local sectors overlap.)
+inline bool coincident_blocks(const Boundary& b, std::uint32_t q, const Point& wedge_a,
+                              const Point& wedge_b) {
+  const Point& corner = b.pos[q];
+  const auto in_wedge = [&](const Point& y) {
+    return orient2d(corner, wedge_a, y) > 0 && orient2d(wedge_b, corner, y) > 0;
+  };
+  return in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]]);
+}
+
+/// Whether hashed node q spoils the ear (p, v, n). Strictly inside always does; on the
+/// triangle's boundary it does when its edges reach into the triangle (paper Fig. 1(b)).
+template <class Links>
+bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_t v,
+            std::uint32_t n, std::uint32_t q) {
+  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n], &x = b.pos[q];
+  const double o1 = orient2d(a, t, x);
+  if (o1 < 0) return false;
+  const double o2 = orient2d(t, c, x);
+  if (o2 < 0) return false;
+  const double o3 = orient2d(c, a, x);
+  if (o3 < 0) return false;
+  if (o1 > 0 && o2 > 0 && o3 > 0) return true;
+  if (o3 == 0 && x != a && x != c) return true;  // on the open diagonal
+  if (!links.readable(q)) return true;
+  if (x == a) return coincident_blocks(b, q, t, c);
+  if (x == c) return coincident_blocks(b, q, a, t);
+  if (x == t) return coincident_blocks(b, q, c, a);
+  const Point &qp = b.pos[b.prev[q]], &qn = b.pos[b.next[q]];
+  if (o1 == 0) return orient2d(a, t, qp) > 0 || orient2d(a, t, qn) > 0;
+  return orient2d(t, c, qp) > 0 || orient2d(t, c, qn) > 0;
+}
+
+/// Whether v is an ear: strictly convex, no boundary edge along its diagonal from one of the
+/// diagonal's ends (a collinear chain the grid does not hold), and no hashed node for which
+/// `counts(node)` holds blocks it. Reads the links of v, its neighbours and blocking candidates.
+template <class Links, class Counts>
+bool is_ear(const Boundary& b, const ReflexGrid& grid, const Links& links, std::uint32_t v,
+            Counts&& counts) {
+  const std::uint32_t p = b.prev[v], n = b.next[v];
+  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
+  if (!(orient2d(a, t, c) > 0)) return false;
+  const Point &before = b.pos[b.prev[p]], &after = b.pos[b.next[n]];
+  if (orient2d(a, c, after) == 0 && on_open_segment(after, a, c)) return false;
+  if (orient2d(a, c, before) == 0 && on_open_segment(before, a, c)) return false;
+  const Point lo{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y})};
+  const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
+  return !grid.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
+    const Point& x = e.pos;
+    if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
+    if (e.node == p || e.node == v || e.node == n) return false;
+    return counts(e.node) && blocks(b, links, p, v, n, e.node);
+  });
+}
+
+}  // namespace pear::detail
