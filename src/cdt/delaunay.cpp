@@ -1,9 +1,128 @@
-// Placeholder until the flipping lands: leaves the triangulation as it is.
+// Constrained Delaunay triangulation by exact edge flips (paper §2.4): Lawson's flips on the
+// whole triangulation, or first inside breadth-first triangle sets in parallel tasks, then
+// across the sets' borders.
 #include "delaunay.hpp"
 
-namespace pear::detail {
+#include <algorithm>
+#include <limits>
 
-void make_delaunay(std::span<const Point>, const CleanPolygon&, TriangleList&,
-                   const ParallelContext&, DelaunayStatistics&) {}
+#include "mesh.hpp"
+#include "partition.hpp"
+
+namespace pear::detail {
+namespace {
+
+/// Below this many triangles per set the parallel tasks cost more than they save.
+constexpr std::size_t min_triangles_per_set = 256;
+
+/// Lawson's algorithm needs at most n(n-1)/2 flips on n vertices (an edge, once flipped away,
+/// never comes back); a budget of that many keeps garbage from looping forever.
+std::size_t flip_budget(std::size_t vertices) {
+  if (vertices > (std::size_t{1} << 32)) return std::numeric_limits<std::size_t>::max();
+  return vertices * (vertices - 1) / 2 + 1;
+}
+
+/// Every interior edge once, in triangle order (the stack pops them in reverse).
+void push_interior_edges(const Mesh& mesh, std::vector<std::uint32_t>& stack,
+                         std::vector<std::uint8_t>& queued) {
+  for (std::uint32_t h = 0; h < mesh.twin.size(); ++h) {
+    if (mesh.twin[h] == no_twin || mesh.twin[h] < h) continue;
+    stack.push_back(h);
+    queued[h] = 1;
+  }
+}
+
+/// The half-edges of set s whose twin lies in another set: they were not flipped by the task
+/// and their twins may be stale.
+void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::uint32_t s,
+                     std::vector<std::uint32_t>& borders) {
+  for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
+    const std::uint32_t t = partition.order[i];
+    for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h)
+      if (mesh.twin[h] != no_twin && partition.part[mesh.twin[h] / 3] != s) borders.push_back(h);
+  }
+}
+
+/// Pairs the border half-edges again by their endpoints: the sets' flips moved them to other
+/// slots without telling the other side. Returns one half-edge of each pair, sorted.
+std::vector<std::uint32_t> relink_borders(Mesh& mesh,
+                                          const std::vector<std::vector<std::uint32_t>>& sets) {
+  std::vector<std::uint32_t> all;
+  for (const auto& borders : sets) all.insert(all.end(), borders.begin(), borders.end());
+  const auto key = [&](std::uint32_t h) {
+    const std::uint64_t u = mesh.origin(h), v = mesh.destination(h);
+    return std::min(u, v) << 32 | std::max(u, v);
+  };
+  std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
+    return key(h) != key(g) ? key(h) < key(g) : h < g;
+  });
+  std::vector<std::uint32_t> first_of_pair;
+  for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
+    mesh.twin[all[i]] = all[i + 1];
+    mesh.twin[all[i + 1]] = all[i];
+    first_of_pair.push_back(all[i]);
+  }
+  return first_of_pair;
+}
+
+void flip_sequentially(Mesh& mesh, std::size_t budget, const ParallelContext& ctx,
+                       DelaunayStatistics& stats) {
+  ctx.run_serial("cdt flip", [&] {
+    std::vector<std::uint32_t> stack;
+    std::vector<std::uint8_t> queued(mesh.twin.size(), 0);
+    push_interior_edges(mesh, stack, queued);
+    stats.flips = flip_until_delaunay(mesh, stack, queued, FlipScope{}, budget);
+  });
+}
+
+void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const ParallelContext& ctx,
+                  DelaunayStatistics& stats) {
+  TrianglePartition partition;
+  ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
+  std::vector<std::uint8_t> queued(mesh.twin.size(), 0);
+  std::vector<std::size_t> flips(sets, 0);
+  std::vector<std::vector<std::uint32_t>> borders(sets);
+  ctx.run_tasks("cdt flip sets", sets, [&](std::size_t s) {
+    const FlipScope scope{partition.part.data(), static_cast<std::uint32_t>(s)};
+    std::vector<std::uint32_t> stack;
+    for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
+      const std::uint32_t t = partition.order[i];
+      for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
+        const std::uint32_t g = mesh.twin[h];
+        if (g == no_twin || g < h || !scope.contains(g)) continue;
+        stack.push_back(h);
+        queued[h] = 1;
+      }
+    }
+    flips[s] = flip_until_delaunay(mesh, stack, queued, scope, budget);
+    collect_borders(mesh, partition, static_cast<std::uint32_t>(s), borders[s]);
+  });
+  for (std::size_t f : flips) stats.flips_in_partitions += f;
+  ctx.run_serial("cdt flip borders", [&] {
+    std::vector<std::uint32_t> stack = relink_borders(mesh, borders);
+    for (std::uint32_t h : stack) queued[h] = 1;
+    stats.flips_on_borders = flip_until_delaunay(mesh, stack, queued, FlipScope{}, budget);
+  });
+  stats.flips = stats.flips_in_partitions + stats.flips_on_borders;
+}
+
+}  // namespace
+
+void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
+                   TriangleList& triangles, const ParallelContext& ctx, DelaunayStatistics& stats) {
+  stats = {};
+  Mesh mesh;
+  bool built = false;
+  ctx.run_serial("cdt adjacency", [&] { built = build_mesh(points, polygon, triangles, mesh); });
+  if (!built) return;  // not a triangulation: flipping could only make it worse
+  stats.edges = mesh.interior_edges;
+  const std::size_t budget = flip_budget(points.size());
+  const std::size_t sets =
+      std::min<std::size_t>(ctx.partitions, triangles.size() / min_triangles_per_set);
+  if (sets > 1)
+    flip_in_sets(mesh, static_cast<std::uint32_t>(sets), budget, ctx, stats);
+  else
+    flip_sequentially(mesh, budget, ctx, stats);
+}
 
 }  // namespace pear::detail

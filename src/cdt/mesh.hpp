@@ -1,0 +1,71 @@
+// The triangulation as half-edges with twins: what Lawson's edge flips (paper §2.4) work on.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "../earclip/clean.hpp"
+#include "../earclip/ear_clipper.hpp"
+
+namespace pear::detail {
+
+/// Twin of an edge nobody may flip: a polygon edge (constraint) or the polygon's boundary.
+inline constexpr std::uint32_t no_twin = UINT32_MAX;
+
+/// Half-edge h = 3t + k of triangle t runs from corner k to corner k + 1; corner k + 2 is the
+/// apex across it. A flip keeps both triangles' numbers, so a triangle stays in its partition.
+struct Mesh {
+  std::span<const Point> points;
+  TriangleList* triangles = nullptr;
+  std::vector<std::uint32_t> twin;  ///< the same edge seen from the neighbour, or no_twin
+  std::size_t interior_edges = 0;   ///< edges with a twin: the ones that may be flipped
+
+  std::uint32_t corner(std::uint32_t h, std::uint32_t step) const {
+    return (*triangles)[h / 3][(h % 3 + step) % 3];
+  }
+  std::uint32_t origin(std::uint32_t h) const { return corner(h, 0); }
+  std::uint32_t destination(std::uint32_t h) const { return corner(h, 1); }
+};
+
+/// The half-edge after h in its triangle (counterclockwise).
+inline std::uint32_t next_half_edge(std::uint32_t h) {
+  return h % 3 == 2 ? h - 2 : h + 1;
+}
+
+/// Fills mesh.twin for `triangles` in linear time: half-edges and the polygon's ring edges are
+/// counting-sorted by their endpoints (caller indices). An edge of a ring is a constraint; so is
+/// an edge with one triangle. Bridges and other diagonals have two triangles and may be flipped,
+/// so the result is the CDT of the polygon, not of its bridged boundary. Returns false when an
+/// edge has more than two triangles: not a triangulation, nothing may be flipped.
+bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, TriangleList& triangles,
+                Mesh& mesh);
+
+/// Whether the edge h must be flipped: its two triangles and their apexes form a strictly convex
+/// quadrilateral (the flip gives two counterclockwise triangles) and the apex across h lies
+/// strictly inside the circumcircle, by exact incircle. Cocircular points are never flipped:
+/// that tie rule makes the end result unique for a given order of flips. A zero-area triangle
+/// (collinear corners from the input) is flipped away whenever the flip gives two proper
+/// triangles, since no CDT contains it.
+bool must_flip(const Mesh& mesh, std::uint32_t h);
+
+/// Which triangles a flip may touch: all (part == nullptr) or those of partition `own`.
+struct FlipScope {
+  const std::uint32_t* part = nullptr;
+  std::uint32_t own = 0;
+  bool contains(std::uint32_t h) const { return part == nullptr || part[h / 3] == own; }
+};
+
+/// Replaces the edge h by the other diagonal of its quadrilateral. The twins of the four outer
+/// edges are updated where they lie in `scope`; outside it they are left stale (the caller
+/// relinks them). Half-edge h stays the new diagonal.
+void flip(Mesh& mesh, std::uint32_t h, FlipScope scope);
+
+/// Lawson's flip loop: pops suspect half-edges from `stack` (flags in `queued`) and flips those
+/// that must be flipped, pushing the outer edges of every flipped quadrilateral. Only edges with
+/// both triangles in `scope` are looked at. Stops after `budget` flips. Returns the flip count.
+std::size_t flip_until_delaunay(Mesh& mesh, std::vector<std::uint32_t>& stack,
+                                std::vector<std::uint8_t>& queued, FlipScope scope,
+                                std::size_t budget);
+
+}  // namespace pear::detail

@@ -1,0 +1,125 @@
+// Constrained Delaunay by flips on small polygons chosen for one difficulty each, and on the
+// synthetic families: validator's Delaunay check, equality with CGAL, flip statistics,
+// determinism across thread counts.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "pear/generate.hpp"
+#include "support.hpp"
+
+namespace pear::testing {
+namespace {
+
+void expect_cdt_everywhere(const Polygon& polygon, const std::string& what) {
+  for (Algorithm algorithm : all_algorithms)
+    for (unsigned threads : {1u, 2u})
+      for (unsigned partitions : {1u, 3u}) {
+        SCOPED_TRACE(what + " " + algorithm_name(algorithm) + " threads " +
+                     std::to_string(threads) + " partitions " + std::to_string(partitions));
+        const auto result = constrained_delaunay(polygon, algorithm, threads, partitions);
+        ASSERT_EQ(result.status, Status::ok);
+        expect_delaunay(polygon, result.triangles);
+        expect_equal_to_cgal(polygon, result.triangles);
+      }
+}
+
+TEST(Cdt, ConvexPolygonInGeneralPosition) {
+  Ring ring;
+  for (int i = 0; i < 60; ++i) {
+    const double angle = 2 * M_PI * i / 60;
+    ring.push_back({std::cos(angle) * (3 + 0.01 * (i % 7)), std::sin(angle) * 2});
+  }
+  expect_cdt_everywhere({ring}, "ellipse");
+}
+
+TEST(Cdt, CocircularPointsAreNeverFlipped) {
+  // 12 points exactly on the circle of radius 5: every triangulation is a CDT.
+  const Ring ring = {{5, 0},  {4, 3},   {3, 4},   {0, 5},  {-3, 4}, {-4, 3},
+                     {-5, 0}, {-4, -3}, {-3, -4}, {0, -5}, {3, -4}, {4, -3}};
+  const auto result = constrained_delaunay({ring}, Algorithm::sequential, 1, 1);
+  ASSERT_EQ(result.status, Status::ok);
+  EXPECT_EQ(result.delaunay.flips, 0u);
+  EXPECT_EQ(result.delaunay.edges, ring.size() - 3);
+  expect_delaunay({ring}, result.triangles);
+  expect_equal_to_cgal({ring}, result.triangles);
+}
+
+TEST(Cdt, ZeroAreaTriangleFromCollinearRunIsFlippedAway) {
+  // A long bottom edge cut into collinear pieces: ear clipping may leave flat triangles there.
+  Ring ring;
+  for (int x = 0; x <= 20; ++x) ring.push_back({static_cast<double>(x), 0});
+  ring.push_back({20, 1});
+  ring.push_back({10, 0.5});
+  ring.push_back({0, 1});
+  expect_cdt_everywhere({ring}, "collinear run");
+}
+
+TEST(Cdt, BridgeToAHoleIsNotAConstraint) {
+  const Polygon polygon = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}};
+  expect_cdt_everywhere(polygon, "square hole");
+}
+
+TEST(Cdt, HoleTouchingTheOuterRingAtAVertex) {
+  const Polygon polygon = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 5}},
+                           {{0, 5}, {4, 6}, {4, 4}},
+                           {{7, 2}, {7, 3}, {8, 3}}};
+  expect_cdt_everywhere(polygon, "touching hole");
+}
+
+TEST(Cdt, StatisticsAddUp) {
+  const Polygon polygon = generate_polygon("star", 5000, 3);
+  const auto result = constrained_delaunay(polygon, Algorithm::sequential, 2, 4);
+  ASSERT_EQ(result.status, Status::ok);
+  EXPECT_EQ(result.delaunay.edges, 5000u - 3);
+  EXPECT_GT(result.delaunay.flips_in_partitions, 0u);
+  EXPECT_EQ(result.delaunay.flips,
+            result.delaunay.flips_in_partitions + result.delaunay.flips_on_borders);
+  const auto one = constrained_delaunay(polygon, Algorithm::sequential, 1, 1);
+  EXPECT_EQ(one.delaunay.flips_in_partitions + one.delaunay.flips_on_borders, 0u);
+  EXPECT_GT(one.delaunay.flips, 0u);
+}
+
+TEST(Cdt, WithoutDelaunayNoStatistics) {
+  const auto result = triangulate(generate_polygon("star", 500, 3));
+  EXPECT_EQ(result.delaunay.flips, 0u);
+  EXPECT_EQ(result.delaunay.edges, 0u);
+}
+
+class Families : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Families, EqualsCgalForEveryAlgorithm) {
+  const Polygon polygon = generate_polygon(GetParam(), 3000, 11);
+  expect_cdt_everywhere(polygon, GetParam());
+}
+
+TEST_P(Families, SameTrianglesOnOneTwoAndFourThreads) {
+  const Polygon polygon = generate_polygon(GetParam(), 20000, 5);
+  for (Algorithm algorithm : all_algorithms)
+    for (unsigned partitions : {2u, 4u, 7u}) {
+      SCOPED_TRACE(std::string(algorithm_name(algorithm)) + " partitions " +
+                   std::to_string(partitions));
+      const auto one = constrained_delaunay(polygon, algorithm, 1, partitions);
+      ASSERT_EQ(one.status, Status::ok);
+      for (unsigned threads : {2u, 4u}) {
+        const auto many = constrained_delaunay(polygon, algorithm, threads, partitions);
+        EXPECT_EQ(many.triangles, one.triangles) << threads << " threads";
+        EXPECT_EQ(many.delaunay.flips, one.delaunay.flips);
+      }
+    }
+}
+
+std::vector<std::string> kinds() {
+  std::vector<std::string> out;
+  for (std::string_view kind : generator_kinds()) out.emplace_back(kind);
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Synthetic, Families, ::testing::ValuesIn(kinds()), [](const auto& info) {
+  std::string name = info.param;
+  std::replace(name.begin(), name.end(), '-', '_');
+  return name;
+});
+
+}  // namespace
+}  // namespace pear::testing

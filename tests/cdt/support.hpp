@@ -1,0 +1,140 @@
+// Helpers for the CDT tests: run pear with Options::delaunay under any algorithm, thread count
+// and partition count; check the CDT property with the validator; compare with CGAL's CDT.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "pear/pear.hpp"
+#include "pear/predicates.hpp"
+#include "pear/scheduler.hpp"
+#include "pear/validate.hpp"
+#include "peers.hpp"  // bench/triangulate: CGAL's CDT with the nesting-level flood fill
+
+namespace pear::testing {
+
+using Triangles = std::vector<std::array<std::uint32_t, 3>>;
+
+inline constexpr Algorithm all_algorithms[] = {Algorithm::sequential, Algorithm::partition_and_cut,
+                                               Algorithm::mark_and_cut,
+                                               Algorithm::divide_and_conquer};
+
+inline const char* algorithm_name(Algorithm a) {
+  switch (a) {
+    case Algorithm::sequential:
+      return "sequential";
+    case Algorithm::partition_and_cut:
+      return "partition_and_cut";
+    case Algorithm::mark_and_cut:
+      return "mark_and_cut";
+    case Algorithm::divide_and_conquer:
+      return "divide_and_conquer";
+    default:
+      return "automatic";
+  }
+}
+
+/// One executor per thread count for the whole test program (threads 1: none).
+inline Executor* executor_for(unsigned threads) {
+  static std::map<unsigned, std::unique_ptr<Executor>> executors;
+  if (threads <= 1) return nullptr;
+  auto& executor = executors[threads];
+  if (!executor) executor = std::make_unique<Executor>(threads);
+  return executor.get();
+}
+
+inline Triangulation<> constrained_delaunay(const Polygon& polygon, Algorithm algorithm,
+                                            unsigned threads, unsigned partitions) {
+  Options options{.algorithm = algorithm, .delaunay = true};
+  options.threads = threads;
+  options.partitions = partitions;
+  options.executor = executor_for(threads);
+  return triangulate(polygon, options);
+}
+
+/// Valid triangulation with n + 2h - 2 - 2m triangles, exact area, every edge locally Delaunay.
+inline void expect_delaunay(const Polygon& polygon, const Triangles& triangles) {
+  const ValidationReport report =
+      validate(polygon, triangles, ValidateOptions{.check_delaunay = true});
+  EXPECT_TRUE(report.valid) << (report.messages.empty() ? std::string() : report.messages[0])
+                            << " (" << report.non_delaunay_edges << " edges not Delaunay)";
+  EXPECT_EQ(report.zero_area_triangles, 0u);
+  EXPECT_EQ(report.area_rel_error, 0.0);
+}
+
+/// The first index of every point's position: touching rings repeat a point under two indices,
+/// and CGAL keeps only one vertex there.
+inline std::vector<std::uint32_t> canonical_indices(const Polygon& polygon) {
+  std::map<std::pair<double, double>, std::uint32_t> first;
+  std::vector<std::uint32_t> canonical;
+  for (const Ring& ring : polygon)
+    for (const Point& p : ring) {
+      const auto [it, added] =
+          first.emplace(std::pair{p.x, p.y}, static_cast<std::uint32_t>(canonical.size()));
+      canonical.push_back(it->second);
+    }
+  return canonical;
+}
+
+/// Triangles by canonical index, each rotated to start at its smallest corner.
+inline std::set<std::array<std::uint32_t, 3>> triangle_set(
+    const Triangles& triangles, const std::vector<std::uint32_t>& canonical) {
+  std::set<std::array<std::uint32_t, 3>> out;
+  for (const auto& t : triangles) {
+    std::array<std::uint32_t, 3> c = {canonical[t[0]], canonical[t[1]], canonical[t[2]]};
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
+    out.insert(c);
+  }
+  return out;
+}
+
+/// True when some edge of `t` is shared with another triangle whose apex lies exactly
+/// on t's circumcircle: the only place where two CDTs of one polygon may differ.
+inline bool has_cocircular_neighbour(
+    const std::array<std::uint32_t, 3>& t,
+    const std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t>& apex_of_edge,
+    const std::vector<Point>& points) {
+  for (int k = 0; k < 3; ++k) {
+    const auto across = apex_of_edge.find({t[(k + 1) % 3], t[k]});
+    if (across == apex_of_edge.end()) continue;
+    if (incircle(points[t[0]], points[t[1]], points[t[2]], points[across->second]) == 0)
+      return true;
+  }
+  return false;
+}
+
+inline std::vector<Point> flat_points(const Polygon& polygon) {
+  std::vector<Point> points;
+  for (const Ring& ring : polygon) points.insert(points.end(), ring.begin(), ring.end());
+  return points;
+}
+
+/// CGAL's exact CDT restricted to the polygon: the same triangles, except where four or more
+/// points are cocircular; there the counts must agree and each of our differing triangles must
+/// have a cocircular neighbour (and expect_delaunay must hold, checked separately).
+inline void expect_equal_to_cgal(const Polygon& polygon, const Triangles& ours) {
+  const auto cgal = bench::prepare_cgal_cdt(polygon);
+  cgal->triangulate();
+  const auto canonical = canonical_indices(polygon);
+  const auto mine = triangle_set(ours, canonical);
+  const auto theirs = triangle_set(cgal->triangles(), canonical);
+  ASSERT_EQ(mine.size(), theirs.size()) << "pear and CGAL differ in the triangle count";
+  if (mine == theirs) return;
+  std::map<std::pair<std::uint32_t, std::uint32_t>, std::uint32_t> apex_of_edge;
+  for (const auto& t : mine)
+    for (int k = 0; k < 3; ++k) apex_of_edge[{t[k], t[(k + 1) % 3]}] = t[(k + 2) % 3];
+  const std::vector<Point> points = flat_points(polygon);
+  std::size_t unexplained = 0;
+  for (const auto& t : mine)
+    if (!theirs.contains(t) && !has_cocircular_neighbour(t, apex_of_edge, points)) ++unexplained;
+  EXPECT_EQ(unexplained, 0u) << "triangles not in CGAL's CDT without a cocircular neighbour";
+}
+
+}  // namespace pear::testing
