@@ -1,0 +1,214 @@
+#!/usr/bin/env python3
+"""Writes the seed inputs of corpus/fuzz/<target>/ in each target's byte layout.
+
+Usage: fuzz/make_seeds.py PEAR_CLI   (run from the repository root; PEAR_CLI is a built `pear`
+tool, used for the synthetic families of `pear generate`). Sources: corpus/earcut (mapbox/earcut's
+fixtures; see corpus/fuzz/MANIFEST.tsv), hand-made degenerate shapes and cell sets, the synthetic
+families. Files found by fuzzing (crash-*, regression-*) are not touched.
+The layouts are documented in fuzz/ring_bytes.hpp, fuzz/cell_polygon.hpp and the targets.
+"""
+import json
+import pathlib
+import random
+import struct
+import subprocess
+import sys
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+OUT = ROOT / "corpus" / "fuzz"
+manifest = []
+
+SMALL_GRID, ANY_DOUBLE, SCALED_GRID = 0, 2, 3
+
+
+def write(target, name, data, source):
+    path = OUT / target / name
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(bytes(data))
+    manifest.append((f"{target}/{name}", source))
+
+
+def ring_bytes(rings, mode, grid=14, exponent=0):
+    """ring_bytes.hpp: mode header, grid byte, exponent byte, then count + points per ring."""
+    out = [mode, grid, exponent & 0xFF]
+    for ring in rings:
+        out.append(len(ring))
+        for x, y in ring:
+            if mode == ANY_DOUBLE:
+                out += struct.pack("<dd", x, y)
+            else:
+                out.append(int(x) | int(y) << 4)
+    return out
+
+
+def open_rings(coordinates):
+    """GeoJSON rings without their closing point."""
+    return [ring[:-1] if len(ring) > 1 and ring[0] == ring[-1] else ring for ring in coordinates]
+
+
+def earcut_fixtures():
+    for path in sorted((ROOT / "corpus" / "earcut").glob("*.json")):
+        data = json.loads(path.read_text())
+        if not isinstance(data, dict) or data.get("type") != "Polygon":
+            continue
+        rings = open_rings(data["coordinates"])
+        if sum(map(len, rings)) <= 256 and len(rings) <= 32 and max(map(len, rings)) <= 255:
+            yield path, rings
+
+
+# Small-grid shapes (coordinates 0..15): the degenerate cases the issue names.
+SHAPES = {
+    "square": [[(0, 0), (4, 0), (4, 4), (0, 4)]],
+    "square-hole": [[(0, 0), (6, 0), (6, 6), (0, 6)], [(2, 2), (2, 4), (4, 4), (4, 2)]],
+    "collinear-run": [[(0, 0), (1, 0), (2, 0), (3, 0), (3, 1), (3, 2), (3, 3), (0, 3)]],
+    "repeated-points": [[(0, 0), (0, 0), (4, 0), (4, 4), (4, 4), (0, 4), (0, 0)]],
+    "spike": [[(0, 0), (4, 0), (4, 2), (6, 2), (4, 2), (4, 4), (0, 4)]],
+    "spike-inward": [[(0, 0), (4, 0), (4, 2), (2, 2), (4, 2), (4, 4), (0, 4)]],
+    "bowtie": [[(0, 0), (4, 4), (4, 0), (0, 4)]],
+    "figure-eight": [[(0, 0), (2, 0), (2, 2), (4, 2), (4, 4), (2, 4), (2, 2), (0, 2)]],
+    "hole-touching-outer": [[(0, 0), (6, 0), (6, 6), (0, 6), (0, 3)], [(0, 3), (3, 2), (3, 4)]],
+    "holes-touching": [[(0, 0), (8, 0), (8, 8), (0, 8)], [(2, 2), (4, 4), (4, 2)],
+                       [(4, 4), (6, 6), (6, 4)]],
+    "hole-outside": [[(0, 0), (4, 0), (4, 4), (0, 4)], [(6, 6), (8, 6), (8, 8)]],
+    "nested-holes": [[(0, 0), (9, 0), (9, 9), (0, 9)], [(1, 1), (1, 8), (8, 8), (8, 1)],
+                     [(3, 3), (3, 5), (5, 5), (5, 3)]],
+    "zero-area-hole": [[(0, 0), (6, 0), (6, 6), (0, 6)], [(1, 1), (2, 2), (3, 3)]],
+    "vertex-on-edge": [[(0, 0), (6, 0), (6, 6), (0, 6)], [(0, 3), (3, 2), (3, 4)]],
+    "overlapping-edges": [[(0, 0), (6, 0), (6, 6), (0, 6)], [(0, 0), (3, 0), (3, 3)]],
+    "hole-chord": [[(0, 0), (4, 0), (8, 0), (8, 8), (4, 8), (0, 8)], [(4, 0), (6, 4), (4, 8), (2, 4)]],
+}
+
+
+def degenerate_seeds():
+    for path, rings in earcut_fixtures():
+        write("degenerate", f"earcut-{path.stem}", ring_bytes(rings, ANY_DOUBLE),
+              f"corpus/earcut/{path.name}")
+    for name, rings in SHAPES.items():
+        write("degenerate", f"grid-{name}", ring_bytes(rings, SMALL_GRID), "hand-made")
+    square_hole = SHAPES["square-hole"]
+    for exponent in (-100, -50, 50, 100, 127, -128):  # 2^(2e): both range limits crossed
+        write("degenerate", f"scaled-{exponent}", ring_bytes(square_hole, SCALED_GRID, 14, exponent),
+              "hand-made")
+    for name, value in (("1e300", 1e300), ("subnormal", 5e-324), ("tiny", 2.0 ** -200)):
+        ring = [(0, 0), (value, 0), (value, value), (0, value)]
+        write("degenerate", f"double-{name}", ring_bytes([ring], ANY_DOUBLE), "hand-made")
+    nan_ring = [(0, 0), (float("nan"), 0), (1, 1)]
+    write("degenerate", "double-nan", [ANY_DOUBLE | 4] + ring_bytes([nan_ring], ANY_DOUBLE)[1:],
+          "hand-made")
+    thin = [(0, 0), (1, 1e-15), (2, 0), (3, 1e-15), (3, 1), (0, 1)]
+    write("degenerate", "double-near-collinear", ring_bytes([thin], ANY_DOUBLE), "hand-made")
+
+
+def cell_bytes(rows, flags=0, start=0, exponent=0, offset=0):
+    """cell_polygon.hpp: width, height, flags, start, exponent, offset, then the cells' bits."""
+    height, width = len(rows), len(rows[0])
+    bits = [ch == "#" for row in reversed(rows) for ch in row]
+    out = [width - 2, height - 2, flags, start, exponent & 0xFF, offset & 0xFF, offset >> 8]
+    for i in range(0, len(bits), 8):
+        out.append(sum(1 << k for k, bit in enumerate(bits[i:i + 8]) if bit))
+    return out
+
+
+CELLS = {
+    "full": ["###", "###", "###"],
+    "ring": ["###", "#.#", "###"],
+    "diagonal-holes": ["#####", "#.###", "##.##", "#####"],
+    "hole-touching-outer": ["####", "####", "#.##", ".###"],
+    "checkerboard": ["#.#.#.", ".#.#.#", "#.#.#.", ".#.#.#", "#.#.#.", ".#.#.#"],
+    "comb": ["#########", "#.#.#.#.#", "#.#.#.#.#", "#.#.#.#.#"],
+    "spiral": ["#######", "#.....#", "#.###.#", "#.#.#.#", "#.#...#", "#.#####", "#......"],
+    "many-holes": ["#########", "#.#.#.#.#", "#########", "#.#.#.#.#", "#########"],
+}
+
+
+def random_cells(rng, size, fill):
+    return ["".join("#" if rng.random() < fill else "." for _ in range(size)) for _ in range(size)]
+
+
+def cell_seeds():
+    rng = random.Random(7)
+    seeds = []
+    for name, rows in CELLS.items():
+        for flags, suffix in ((0, ""), (1, "-corners")):
+            seeds.append((f"cells-{name}{suffix}", cell_bytes(rows, flags)))
+    seeds.append(("cells-ring-placed", cell_bytes(CELLS["ring"], 16 | 8 | 4, 0, -90, 12345)))
+    seeds.append(("cells-comb-no-collinear", cell_bytes(CELLS["comb"], 2)))
+    for k in range(6):
+        rows = random_cells(rng, 8 + k, 0.55 + 0.05 * (k % 3))
+        seeds.append((f"cells-random-{k}", cell_bytes(rows, k % 2, rng.randrange(256))))
+    return seeds
+
+
+def generated_families(cli):
+    for kind in ("star", "comb", "spiral", "koch", "hilbert", "random", "holes", "random-holes"):
+        run = subprocess.run([cli, "generate", kind, "100", "--seed", "3"], capture_output=True, text=True)
+        if run.returncode != 0:  # families with a larger minimum size (spiral) are left out
+            continue
+        text = run.stdout
+        data = json.loads(text)
+        coordinates = data["coordinates"] if data.get("type") == "Polygon" else data["coordinates"][0]
+        rings = open_rings(coordinates)
+        if sum(map(len, rings)) <= 256 and len(rings) <= 32:
+            yield kind, rings
+
+
+def configured_seeds(cli):
+    """parallel and cdt: a header byte (bit 0: rings instead of cells), a partitions byte."""
+    for name, cells in cell_seeds():
+        write("bridged", name, [0] + cells, "hand-made" if "random" not in name else "random cells")
+        write("parallel", name, [0, 3] + cells, "as bridged")
+        write("cdt", name, [0, 1] + cells, "as bridged")
+    sources = [(f"earcut-{p.stem}", r, f"corpus/earcut/{p.name}") for p, r in earcut_fixtures()]
+    sources += [(f"generate-{k}", r, f"pear generate {k} 100 --seed 3") for k, r in generated_families(cli)]
+    for name, rings, source in sources:
+        write("parallel", name, [1, 2] + ring_bytes(rings, ANY_DOUBLE), source)
+        write("cdt", name, [1, 1] + ring_bytes(rings, ANY_DOUBLE), source)
+        if name.startswith("generate"):
+            write("degenerate", name, ring_bytes(rings, ANY_DOUBLE), source)
+
+
+def wkt(rings):
+    return "POLYGON(" + ",".join(
+        "(" + ",".join(f"{x!r} {y!r}" for x, y in ring + ring[:1]) + ")" for ring in rings) + ")"
+
+
+def reader_seeds():
+    for path, rings in earcut_fixtures():
+        if len(path.read_bytes()) < 3000:
+            write("readers", f"geojson-{path.stem}", b"\0" + path.read_bytes(), f"corpus/earcut/{path.name}")
+            write("readers", f"wkt-{path.stem}", b"\1" + wkt(rings).encode(), f"corpus/earcut/{path.name}")
+    texts = {
+        "geojson-feature-collection": (0, '{"type":"FeatureCollection","features":[{"type":"Feature",'
+                                          '"properties":{},"geometry":{"type":"MultiPolygon","coordinates":'
+                                          '[[[[0,0],[1,0],[1,1],[0,0]]],[[[2,2],[3,2],[3,3,7]]]]}},'
+                                          '{"type":"Feature","geometry":null}]}'),
+        "geojson-geometry-collection": (0, '{"type":"GeometryCollection","geometries":[{"type":"Polygon",'
+                                           '"coordinates":[[[0,0],[1e-5,0],[0,1E3]]]}]}'),
+        "geojson-small-ring": (4, '[[[0,0],[4,0],[4,4]],[[1,1]]]'),
+        "wkt-multi": (1, "MULTIPOLYGON Z (((0 0 1,4 0 1,4 4 1,0 0 1)),((5 5 0,6 5 0,6 6 0,5 5 0)))\n"
+                         "POLYGON EMPTY polygon ((0 0, 1 0, 0 1, 0 0), (0.1 0.1, 0.2 0.1, 0.1 0.2, 0.1 0.1))"),
+        "wkt-zm": (1, "POLYGON ZM ((0 0 0 0,2 0 0 0,2 2 0 0,0 0 0 0))"),
+        "poly-square-hole": (2, "# a square with a square hole\n8 2 0 0\n0 0 0\n1 6 0\n2 6 6\n3 0 6\n"
+                                "4 2 2\n5 4 2\n6 4 4\n7 2 4\n8 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n"
+                                "4 4 5\n5 5 6\n6 6 7\n7 7 4\n1\n0 3 3\n"),
+        "poly-one-based": (2, "3 2 0 1\n1 0 0 0\n2 1 0 0\n3 0 1 0\n3 1\n1 1 2 0\n2 2 3 0\n3 3 1 0\n0\n0\n"),
+    }
+    for name, (header, text) in texts.items():
+        write("readers", name, bytes([header]) + text.encode(), "hand-made")
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: fuzz/make_seeds.py PEAR_CLI")
+    degenerate_seeds()
+    configured_seeds(sys.argv[1])
+    reader_seeds()
+    found = OUT / "MANIFEST.tsv"  # keep the lines of inputs found by fuzzing
+    kept = [line.split("\t", 1) for line in found.read_text().splitlines()[1:]] if found.exists() else []
+    manifest.extend((f, s) for f, s in kept if "/crash-" in f or "/regression-" in f)
+    lines = ["file\tsource"] + [f"{f}\t{s}" for f, s in sorted(manifest)]
+    (OUT / "MANIFEST.tsv").write_text("\n".join(lines) + "\n")
+
+
+if __name__ == "__main__":
+    main()

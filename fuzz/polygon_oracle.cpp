@@ -1,0 +1,180 @@
+#include "polygon_oracle.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "pear/predicates.hpp"
+#include "support.hpp"
+
+namespace fuzz {
+namespace {
+
+using pear::orient2d;
+using pear::Point;
+using pear::Ring;
+
+bool accepted_coordinate(double c) {
+  if (!std::isfinite(c)) return false;
+  const double magnitude = std::fabs(c);
+  return c == 0 || (pear::min_nonzero_coordinate <= magnitude && magnitude <= pear::max_coordinate);
+}
+
+bool lexicographic_less(const Point& a, const Point& b) {
+  return a.x < b.x || (a.x == b.x && a.y < b.y);
+}
+
+/// p lies on segment ab and is neither endpoint.
+bool inside_segment(const Point& a, const Point& b, const Point& p) {
+  if (p == a || p == b || orient2d(a, b, p) != 0) return false;
+  const auto [low, high] = std::minmax(a, b, lexicographic_less);
+  return lexicographic_less(low, p) && lexicographic_less(p, high);
+}
+
+struct Edge {
+  Point a, b;
+  bool boxes_apart(const Edge& o) const {
+    return std::max(a.x, b.x) < std::min(o.a.x, o.b.x) ||
+           std::max(o.a.x, o.b.x) < std::min(a.x, b.x) ||
+           std::max(a.y, b.y) < std::min(o.a.y, o.b.y) ||
+           std::max(o.a.y, o.b.y) < std::min(a.y, b.y);
+  }
+};
+
+int sign(double v) {
+  return (v > 0) - (v < 0);
+}
+
+/// The two edges cross, overlap, or one's endpoint lies inside the other.
+bool edges_conflict(const Edge& e, const Edge& f) {
+  if ((e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a)) return true;
+  if (inside_segment(e.a, e.b, f.a) || inside_segment(e.a, e.b, f.b) ||
+      inside_segment(f.a, f.b, e.a) || inside_segment(f.a, f.b, e.b))
+    return true;
+  return sign(orient2d(e.a, e.b, f.a)) * sign(orient2d(e.a, e.b, f.b)) < 0 &&
+         sign(orient2d(f.a, f.b, e.a)) * sign(orient2d(f.a, f.b, e.b)) < 0;
+}
+
+bool any_edges_conflict(const pear::Polygon& rings) {
+  std::vector<Edge> edges;
+  for (const Ring& ring : rings)
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
+  for (std::size_t i = 0; i < edges.size(); ++i)
+    for (std::size_t j = i + 1; j < edges.size(); ++j)
+      if (!edges[i].boxes_apart(edges[j]) && edges_conflict(edges[i], edges[j])) return true;
+  return false;
+}
+
+/// Winding number test; p must not lie on the ring.
+bool ring_contains_point(const Ring& ring, const Point& p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const Point& a = ring[i];
+    const Point& b = ring[(i + 1) % ring.size()];
+    if (a.y <= p.y) {
+      if (b.y > p.y && orient2d(a, b, p) > 0) ++winding;
+    } else if (b.y <= p.y && orient2d(a, b, p) < 0) {
+      --winding;
+    }
+  }
+  return winding != 0;
+}
+
+/// Does the segment from ring[i] towards v start into the ring's interior? The interior angle
+/// at a vertex is the intersection (convex) or union (reflex) of the two edges' left sides.
+bool starts_inside(const Ring& ring, int orientation, std::size_t i, const Point& v) {
+  const std::size_t n = ring.size();
+  Point before = ring[(i + n - 1) % n];
+  Point after = ring[(i + 1) % n];
+  if (orientation < 0) std::swap(before, after);
+  const Point& u = ring[i];
+  const bool left_of_out = orient2d(u, after, v) > 0;
+  const bool left_of_in = orient2d(before, u, v) > 0;
+  return orient2d(before, u, after) > 0 ? left_of_out && left_of_in : left_of_out || left_of_in;
+}
+
+/// Is simple ring `inner` inside simple ring `outer`? The two must not cross or overlap, so one
+/// point of inner off outer's vertices, or one chord from a shared vertex, decides.
+bool ring_inside(const Ring& inner, const Ring& outer, int outer_orientation) {
+  std::vector<Point> corners(outer.begin(), outer.end());
+  std::sort(corners.begin(), corners.end(), lexicographic_less);
+  const auto is_corner = [&](const Point& p) {
+    return std::binary_search(corners.begin(), corners.end(), p, lexicographic_less);
+  };
+  for (const Point& p : inner)
+    if (!is_corner(p)) return ring_contains_point(outer, p);
+  for (std::size_t k = 0; k < inner.size(); ++k) {
+    const Point& u = inner[k];
+    const Point& v = inner[(k + 1) % inner.size()];
+    const std::size_t i = std::find(outer.begin(), outer.end(), u) - outer.begin();
+    const std::size_t n = outer.size();
+    if (outer[(i + 1) % n] == v || outer[(i + n - 1) % n] == v) continue;  // a shared edge
+    return starts_inside(outer, outer_orientation, i, v);
+  }
+  return true;
+}
+
+bool visits_a_point_twice(const Ring& ring) {
+  std::vector<Point> sorted(ring.begin(), ring.end());
+  std::sort(sorted.begin(), sorted.end(), lexicographic_less);
+  return std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+}
+
+/// Holes inside the outer ring and outside each other.
+bool holes_nest_correctly(const pear::Polygon& rings, const std::vector<int>& orientation) {
+  for (std::size_t h = 1; h < rings.size(); ++h) {
+    if (!ring_inside(rings[h], rings[0], orientation[0])) return false;
+    for (std::size_t g = 1; g < h; ++g)
+      if (ring_inside(rings[h], rings[g], orientation[g]) ||
+          ring_inside(rings[g], rings[h], orientation[h]))
+        return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+pear::Polygon drop_repeated_points(const pear::Polygon& polygon) {
+  pear::Polygon rings;
+  for (const Ring& ring : polygon) {
+    Ring& kept = rings.emplace_back();
+    for (const Point& p : ring)
+      if (kept.empty() || !(kept.back() == p)) kept.push_back(p);
+    while (kept.size() > 1 && kept.back() == kept.front()) kept.pop_back();
+  }
+  return rings;
+}
+
+PolygonFacts examine(const pear::Polygon& polygon) {
+  PolygonFacts facts;
+  for (const Ring& ring : polygon)
+    for (const Point& p : ring)
+      if (!accepted_coordinate(p.x) || !accepted_coordinate(p.y))
+        facts.coordinates_in_range = false;
+  if (!facts.coordinates_in_range || polygon.empty()) return facts;
+  const pear::Polygon rings = drop_repeated_points(polygon);
+  facts.holes = rings.size() - 1;
+  std::vector<Point> all;
+  for (const Ring& ring : rings) {
+    if (ring.size() < 3 || visits_a_point_twice(ring)) return facts;
+    all.insert(all.end(), ring.begin(), ring.end());
+  }
+  facts.vertices = all.size();
+  std::sort(all.begin(), all.end(), lexicographic_less);
+  facts.repeated_points = all.size() - (std::unique(all.begin(), all.end()) - all.begin());
+  if (any_edges_conflict(rings)) return facts;
+  std::vector<int> orientation;
+  std::vector<mpq_class> areas;
+  for (const Ring& ring : rings) {
+    areas.push_back(twice_ring_area(ring));
+    orientation.push_back(sgn(areas.back()));
+  }
+  if (!holes_nest_correctly(rings, orientation)) return facts;
+  facts.twice_area = abs(areas[0]);
+  for (std::size_t h = 1; h < areas.size(); ++h) facts.twice_area -= abs(areas[h]);
+  facts.valid = true;
+  return facts;
+}
+
+}  // namespace fuzz

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Fuzzes one target with libFuzzer for a while: fuzz/run.sh TARGET SECONDS [libFuzzer options]
+# TARGET: degenerate bridged parallel cdt readers. Sets up build-fuzz (clang, libFuzzer, ASan,
+# UBSan; FUZZ_BUILD names another) when it is missing and builds only the target. The seeds in
+# corpus/fuzz/TARGET are read, never written; inputs libFuzzer finds go to
+# BUILD/fuzz-corpus/TARGET, a crash to BUILD/fuzz-artifacts/TARGET/ (then the exit status is 1).
+# Add a crash to corpus/fuzz/TARGET/crash-WHAT to keep it as a regression input.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+target=${1:?usage: fuzz/run.sh TARGET SECONDS [libFuzzer options]}
+seconds=${2:?usage: fuzz/run.sh TARGET SECONDS [libFuzzer options]}
+shift 2
+build=${FUZZ_BUILD:-build-fuzz}
+if [[ ! -f $build/build.ninja ]]; then
+  CC=clang CXX=clang++ meson setup "$build" -Dfuzz=enabled -Dtests=disabled -Dbench=disabled \
+    -Dcli=disabled -Db_sanitize=address,undefined -Db_lundef=false >/dev/null
+fi
+ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" >/dev/null
+work=$build/fuzz-corpus/$target
+artifacts=$build/fuzz-artifacts/$target/
+mkdir -p "$work" "$artifacts"
+options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192
+         -print_final_stats=1 -artifact_prefix="$artifacts")
+[[ -f fuzz/$target.dict ]] && options+=(-dict="fuzz/$target.dict")
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
+exec "$build/fuzz/fuzz_$target" "${options[@]}" "$@" "$work" "corpus/fuzz/$target"
