@@ -90,28 +90,14 @@ std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
 }
 
 bool EarClipper::is_ear(std::uint32_t v) const {
-  return detail::is_ear(*b_, grid_, AllLinks{}, v, [](std::uint32_t) { return true; });
+  return detail::is_ear(*b_, AllLinks{}, v,
+                        [this](const Point& a, const Point& t, const Point& c, auto&& visit) {
+                          return grid_.any_near_triangle(a, t, c, visit);
+                        });
 }
 
-/// FIST's "top": ears closer to equilateral first. Twice the area over the sum of the squared
-/// sides is 1/sqrt(3) for an equilateral triangle and tends to 0 for slivers.
 double EarClipper::quality(std::uint32_t v) const {
-  const Boundary& b = *b_;
-  const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
-  const auto sq = [](const Point& u, const Point& w) {
-    const double dx = u.x - w.x, dy = u.y - w.y;
-    return dx * dx + dy * dy;
-  };
-  const double sides = sq(a, t) + sq(t, c) + sq(c, a);
-  return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
-}
-
-/// Squared length of v's ear diagonal: "fast" clips short diagonals first, which keeps the
-/// triangles, and so the ear tests, small.
-double EarClipper::diagonal(std::uint32_t v) const {
-  const Point &a = b_->pos[b_->prev[v]], &c = b_->pos[b_->next[v]];
-  const double dx = a.x - c.x, dy = a.y - c.y;
-  return dx * dx + dy * dy;
+  return ear_shape(*b_, v);
 }
 
 void EarClipper::clip(std::uint32_t v) {
@@ -130,9 +116,7 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// ears sit next to the last clip, so clipping stays local and cheap).
 void EarClipper::offer(std::uint32_t v) {
   if (!is_ear(v)) return;
-  const int bucket = heuristic_ == EarHeuristic::top ? EarQueue::shape_bucket(quality(v))
-                                                     : EarQueue::length_bucket(diagonal(v));
-  queue_.push(bucket, {v, stamp_[v]});
+  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]});
 }
 
 bool EarClipper::pop(std::uint32_t& v) {

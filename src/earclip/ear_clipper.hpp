@@ -32,7 +32,6 @@ class EarClipper {
   void classify(std::uint32_t entry);
   bool is_ear(std::uint32_t v) const;
   double quality(std::uint32_t v) const;
-  double diagonal(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);

@@ -8,6 +8,8 @@
 #include <cstdint>
 
 #include "boundary.hpp"
+#include "ear_queue.hpp"
+#include "pear/pear.hpp"
 #include "reflex_grid.hpp"
 
 namespace pear::detail {
@@ -55,11 +57,12 @@ bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_
 }
 
 /// Whether v is an ear: strictly convex, no boundary edge along its diagonal from one of the
-/// diagonal's ends (a collinear chain the grid does not hold), and no hashed node for which
-/// `counts(node)` holds blocks it. Reads the links of v, its neighbours and blocking candidates.
-template <class Links, class Counts>
-bool is_ear(const Boundary& b, const ReflexGrid& grid, const Links& links, std::uint32_t v,
-            Counts&& counts) {
+/// diagonal's ends (a collinear chain the grid does not hold), and no hashed node blocks it.
+/// `near(a, t, c, visit)` calls visit(entry) for the hashed nodes near the triangle until visit
+/// returns true, and returns whether it did. Reads the links of v, its neighbours and of
+/// blocking candidates that `links` allows.
+template <class Links, class Near>
+bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near) {
   const std::uint32_t p = b.prev[v], n = b.next[v];
   const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
   if (!(orient2d(a, t, c) > 0)) return false;
@@ -68,12 +71,33 @@ bool is_ear(const Boundary& b, const ReflexGrid& grid, const Links& links, std::
   if (orient2d(a, c, before) == 0 && on_open_segment(before, a, c)) return false;
   const Point lo{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y})};
   const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
-  return !grid.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
+  return !near(a, t, c, [&](const ReflexGrid::Entry& e) {
     const Point& x = e.pos;
     if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
     if (e.node == p || e.node == v || e.node == n) return false;
-    return counts(e.node) && blocks(b, links, p, v, n, e.node);
+    return blocks(b, links, p, v, n, e.node);
   });
+}
+
+/// FIST's "top": ears closer to equilateral first. Twice the area over the sum of the squared
+/// sides is 1/sqrt(3) for an equilateral triangle and tends to 0 for slivers.
+inline double ear_shape(const Boundary& b, std::uint32_t v) {
+  const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
+  const auto sq = [](const Point& u, const Point& w) {
+    const double dx = u.x - w.x, dy = u.y - w.y;
+    return dx * dx + dy * dy;
+  };
+  const double sides = sq(a, t) + sq(t, c) + sq(c, a);
+  return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
+}
+
+/// The queue bucket of ear v: by shape for "top"; by the squared length of the diagonal for
+/// "fast", which clips short diagonals first and so keeps triangles and ear tests small.
+inline int ear_bucket(const Boundary& b, std::uint32_t v, EarHeuristic heuristic) {
+  if (heuristic == EarHeuristic::top) return EarQueue::shape_bucket(ear_shape(b, v));
+  const Point &a = b.pos[b.prev[v]], &c = b.pos[b.next[v]];
+  const double dx = a.x - c.x, dy = a.y - c.y;
+  return EarQueue::length_bucket(dx * dx + dy * dy);
 }
 
 }  // namespace pear::detail

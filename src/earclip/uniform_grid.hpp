@@ -3,8 +3,11 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include "pear/geometry.hpp"
 
@@ -43,6 +46,51 @@ struct GridFrame {
   }
   std::size_t cell_count() const { return static_cast<std::size_t>(nx) * ny; }
 
+  /// Calls visit(first_cell, last_cell) for the cells of each row that triangle (a, b, c) may
+  /// touch: per row, only the columns the triangle spans within the row's band (plus one on each
+  /// side for rounding). Stops and returns true when visit does.
+  template <class VisitRow>
+  bool any_row_span_of_triangle(const Point& a, const Point& b, const Point& c,
+                                VisitRow&& visit) const {
+    const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    const int r0 = row(lo_y), r1 = row(hi_y);
+    for (int r = r0; r <= r1; ++r) {
+      double band_lo = lo_y, band_hi = hi_y;
+      if (r0 != r1 && inv_h > 0) {
+        band_lo = std::max(lo_y, y0 + r / inv_h);
+        band_hi = std::min(hi_y, y0 + (r + 1) / inv_h);
+      }
+      double x_lo = INFINITY, x_hi = -INFINITY;
+      for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
+        clip_to_band(p, q, band_lo, band_hi, x_lo, x_hi);
+      if (!(x_lo <= x_hi)) x_lo = std::min({a.x, b.x, c.x}), x_hi = std::max({a.x, b.x, c.x});
+      const int c0 = std::max(0, column(x_lo) - 1);
+      const int c1 = std::min(nx - 1, column(x_hi) + 1);
+      if (visit(cell(c0, r), cell(c1, r))) return true;
+    }
+    return false;
+  }
+
+  /// Widens [x_lo, x_hi] by the x-range of segment p-q within y in [band_lo, band_hi].
+  static void clip_to_band(const Point& p, const Point& q, double band_lo, double band_hi,
+                           double& x_lo, double& x_hi) {
+    const double y_min = std::min(p.y, q.y), y_max = std::max(p.y, q.y);
+    if (y_max < band_lo || y_min > band_hi) return;
+    const auto x_at = [&](double y) {
+      if (p.y == q.y) return p.x;
+      const double t = std::clamp((y - p.y) / (q.y - p.y), 0.0, 1.0);
+      return p.x + t * (q.x - p.x);
+    };
+    if (p.y == q.y) {
+      x_lo = std::min({x_lo, p.x, q.x});
+      x_hi = std::max({x_hi, p.x, q.x});
+      return;
+    }
+    const double xa = x_at(std::max(band_lo, y_min)), xb = x_at(std::min(band_hi, y_max));
+    x_lo = std::min({x_lo, xa, xb});
+    x_hi = std::max({x_hi, xa, xb});
+  }
+
   /// Calls visit(cell) for every cell the segment a-c passes through, and for the neighbouring
   /// cell on each side in its row (a margin for rounding): every point of the segment lies in
   /// one of the visited cells.
@@ -64,6 +112,51 @@ struct GridFrame {
       for (int col = c0; col <= c1; ++col) visit(cell(col, r));
     }
   }
+};
+
+/// One bit per cell saying whether it holds a node, with a summary bit per 64 cells, so a scan
+/// over a long run of empty cells (a thin triangle across a sparse grid) skips 4096 at a time.
+class Occupancy {
+ public:
+  void reset(std::size_t cells) {
+    words_.assign(cells / 64 + 1, 0);
+    summary_.assign(words_.size() / 64 + 1, 0);
+  }
+  void set(std::size_t cell) {
+    words_[cell / 64] |= std::uint64_t{1} << (cell % 64);
+    summary_[cell / 4096] |= std::uint64_t{1} << (cell / 64 % 64);
+  }
+  void clear(std::size_t cell) {
+    std::uint64_t& word = words_[cell / 64];
+    word &= ~(std::uint64_t{1} << (cell % 64));
+    if (word == 0) summary_[cell / 4096] &= ~(std::uint64_t{1} << (cell / 64 % 64));
+  }
+  /// Calls visit(cell) for the occupied cells in [first, last] in order, until it returns true.
+  template <class Visit>
+  bool any_in(std::size_t first, std::size_t last, Visit&& visit) const {
+    std::size_t cell = first;
+    while (cell <= last) {
+      const std::size_t word_index = cell / 64;
+      if ((summary_[word_index / 64] >> (word_index % 64)) == 0) {
+        cell = (word_index / 64 + 1) * 4096;  // no occupied word left in this summary word
+        continue;
+      }
+      const std::uint64_t word = words_[word_index] >> (cell % 64);
+      if (word == 0) {
+        cell = (word_index + 1) * 64;
+        continue;
+      }
+      cell += static_cast<std::size_t>(std::countr_zero(word));
+      if (cell > last) break;
+      if (visit(cell)) return true;
+      ++cell;
+    }
+    return false;
+  }
+
+ private:
+  std::vector<std::uint64_t> words_;
+  std::vector<std::uint64_t> summary_;
 };
 
 }  // namespace pear::detail

@@ -1,11 +1,58 @@
-// Placeholder until partition-and-cut lands: leaves the whole cycle to the sequential engine.
+// Paper §2.2, partition and cut: landmarks cut the boundary into chains; each chain is clipped
+// by its own task with its own ear queue (so "top" applies per chain); landmarks are never
+// clipped. Beyond the paper: when a round clipped much, a second round with the landmarks moved
+// by half a chain clips what the first left near the chain ends; the sequential engine then
+// finishes the (small) rest with all its fallbacks.
+#include <algorithm>
+
+#include "chain_clipper.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
+namespace {
 
-std::uint32_t partition_and_cut(Boundary&, std::uint32_t entry, const ParallelContext&,
-                                TriangleList&) {
-  return entry;
+constexpr std::size_t min_chain_nodes = 256;  ///< below this a task costs more than it saves
+constexpr int max_rounds = 3;
+
+/// Appends the parts in order, copying them in parallel.
+void gather(std::vector<TriangleList>& parts, std::size_t count, const ParallelContext& ctx,
+            TriangleList& out) {
+  std::vector<std::size_t> offset(count + 1, out.size());
+  for (std::size_t c = 0; c < count; ++c) offset[c + 1] = offset[c] + parts[c].size();
+  out.resize(offset[count]);
+  ctx.run_tasks("gather triangles", count, [&](std::size_t c) {
+    std::copy(parts[c].begin(), parts[c].end(), out.begin() + static_cast<long>(offset[c]));
+  });
+}
+
+}  // namespace
+
+std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
+                                TriangleList& out) {
+  const std::size_t partitions = ctx.partitions;
+  if (partitions < 2) return entry;
+  SharedBoundary s;
+  std::size_t nodes = s.start(b, entry, ctx);
+  std::vector<ChainClipper> clippers(partitions);
+  std::vector<TriangleList> parts(partitions);
+  for (int round = 0; round < max_rounds; ++round) {
+    const std::size_t chains = std::min(partitions, nodes / min_chain_nodes);
+    if (chains < 2) break;
+    const std::size_t offset = round % 2 == 0 ? 0 : nodes / chains / 2;
+    const std::vector<std::size_t> marks = s.place_landmarks(chains, offset, ctx);
+    ctx.run_tasks("clip chains", chains, [&](std::size_t c) {
+      parts[c].clear();
+      clippers[c].run(s, static_cast<std::uint32_t>(c), marks[c], marks[(c + 1) % chains],
+                      ctx.heuristic, parts[c]);
+    });
+    std::size_t clipped = 0;
+    for (std::size_t c = 0; c < chains; ++c) clipped += parts[c].size();
+    gather(parts, chains, ctx, out);
+    if (s.refresh_order(ctx) == no_node) return no_node;
+    nodes = s.order.size();
+    if (clipped < nodes / 2) break;  // the rest is mostly walls that face other chains
+  }
+  return s.order.front();
 }
 
 }  // namespace pear::detail

@@ -1,0 +1,42 @@
+// Paper §2.2: one task clips the ears of one chain with its own queue. A node is clipped only
+// when it and both its neighbours belong to the chain, so the landmarks and their links never
+// change, and the task writes only its own nodes (see shared_boundary.hpp).
+#pragma once
+
+#include <cstdint>
+
+#include "../earclip/ear_clipper.hpp"
+#include "../earclip/ear_queue.hpp"
+#include "shared_boundary.hpp"
+
+namespace pear::detail {
+
+class ChainClipper {
+ public:
+  /// Clips chain `chain`: the nodes of s.order strictly between positions `first` and `last`
+  /// (cyclically). Appends the triangles to `out`.
+  void run(SharedBoundary& s, std::uint32_t chain, std::size_t first, std::size_t last,
+           EarHeuristic heuristic, TriangleList& out);
+
+ private:
+  struct OwnLinks {
+    const SharedBoundary* s;
+    std::uint32_t chain;
+    bool readable(std::uint32_t q) const { return s->owner[q] == chain; }
+  };
+  bool own(std::uint32_t v) const { return s_->owner[v] == chain_; }
+  bool is_ear(std::uint32_t v) const;
+  void offer(std::uint32_t v);
+  /// After v lost a neighbour: it may have stopped being strictly reflex.
+  void update(std::uint32_t v);
+  void unhash(std::uint32_t v);
+
+  SharedBoundary* s_ = nullptr;
+  std::uint32_t chain_ = 0;
+  EarHeuristic heuristic_ = EarHeuristic::top;
+  EarQueue queue_;
+  ReflexGrid own_grid_;  ///< this chain's hashed nodes, kept up to date
+  std::vector<std::uint32_t> scratch_;
+};
+
+}  // namespace pear::detail

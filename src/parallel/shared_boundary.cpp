@@ -1,0 +1,85 @@
+#include "shared_boundary.hpp"
+
+#include <algorithm>
+
+#include "../earclip/pinches.hpp"
+#include "variants.hpp"
+
+namespace pear::detail {
+
+std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry,
+                                  const ParallelContext& ctx) {
+  b = &boundary;
+  const std::size_t size = b->size();
+  alive.assign(size, 0);
+  hashed.assign(size, 0);
+  owner.assign(size, landmark);
+  stamp.assign(size, 0);
+  order.clear();
+  std::uint32_t v = entry;
+  do {
+    alive[v] = 1;
+    order.push_back(v);
+    v = b->next[v];
+  } while (v != entry);
+  std::vector<std::uint32_t> table;
+  find_pinches(*b, alive, order.size(), pinch, table);
+  ctx.run_tasks("classify", ctx.partitions, [&](std::size_t part) {
+    const std::size_t first = part_begin(order.size(), ctx.partitions, part);
+    const std::size_t last = part_begin(order.size(), ctx.partitions, part + 1);
+    for (std::size_t i = first; i < last; ++i) {
+      const std::uint32_t u = order[i];
+      hashed[u] = pinch[u] || b->turn(u) < 0;
+    }
+  });
+  return order.size();
+}
+
+std::uint32_t SharedBoundary::refresh_order(const ParallelContext& ctx) {
+  std::uint32_t entry = no_node;
+  for (std::uint32_t u : order)
+    if (alive[u]) {
+      entry = u;
+      break;
+    }
+  order.clear();
+  if (entry == no_node) return entry;
+  ctx.run_serial("walk", [&] {
+    std::uint32_t v = entry;
+    do {
+      order.push_back(v);
+      v = b->next[v];
+    } while (v != entry);
+  });
+  return entry;
+}
+
+std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count,
+                                                         std::size_t offset,
+                                                         const ParallelContext& ctx) {
+  chains = chain_count;
+  std::vector<std::size_t> marks(chains);
+  const std::size_t count = order.size();
+  for (std::size_t i = 0; i < chains; ++i)
+    marks[i] = (offset + part_begin(count, chains, i)) % count;
+  ctx.run_tasks("place landmarks", chains, [&](std::size_t chain) {
+    const std::size_t first = marks[chain], last = marks[(chain + 1) % chains];
+    owner[order[first]] = landmark;
+    for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)
+      owner[order[i]] = static_cast<std::uint32_t>(chain);
+  });
+  landmarks.clear();
+  for (std::size_t mark : marks)
+    if (hashed[order[mark]]) landmarks.push_back(order[mark]);
+  start_grids.resize(chains);
+  ctx.run_tasks("build start grids", chains, [&](std::size_t chain) {
+    std::vector<std::uint32_t> nodes;
+    for (std::size_t i = (marks[chain] + 1) % count; i != marks[(chain + 1) % chains];
+         i = (i + 1) % count)
+      if (hashed[order[i]]) nodes.push_back(order[i]);
+    start_grids[chain].build(*b, nodes, false);
+  });
+  return marks;
+}
+
+}  // namespace pear::detail

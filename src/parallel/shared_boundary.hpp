@@ -1,0 +1,62 @@
+// The boundary as parallel tasks share it. Every node has one owner (a chain between two
+// landmarks); during a phase a task writes only the links and flags of the nodes it owns, and
+// reads another task's nodes only through what does not change during the phase: positions and
+// the `start_grids` of the nodes hashed at the phase's start, one per chain. Landmarks have no
+// owner and are never clipped. Since nodes only ever turn from reflex to convex while ears are
+// clipped, a node hashed at the start of a phase is a safe stand-in for whatever it has become
+// since: it can only reject an ear, never accept a wrong one.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../earclip/boundary.hpp"
+#include "../earclip/reflex_grid.hpp"
+#include "context.hpp"
+
+namespace pear::detail {
+
+struct SharedBoundary {
+  static constexpr std::uint32_t landmark = UINT32_MAX;
+
+  Boundary* b = nullptr;
+  std::vector<ReflexGrid> start_grids;   ///< per chain: its hashed nodes at the phase start
+  std::vector<std::uint32_t> landmarks;  ///< the hashed landmarks
+  std::vector<std::uint8_t> alive;       ///< still on the boundary
+  std::vector<std::uint8_t> pinch;       ///< shares its position: always hashed
+  std::vector<std::uint8_t> hashed;      ///< strictly reflex or pinch now (owner writes)
+  std::vector<std::uint32_t> owner;      ///< chain of each node, or `landmark`
+  std::vector<std::uint32_t> stamp;      ///< bumped when a node's ear status may have changed
+  std::vector<std::uint32_t> order;      ///< live nodes in cycle order (refreshed per round)
+
+  /// Walks the cycle through `entry`, marks it alive, finds pinches and hashed nodes. Returns
+  /// the cycle's length.
+  std::size_t start(Boundary& boundary, std::uint32_t entry, const ParallelContext& ctx);
+  /// Refreshes `order` from a live node of the cycle; returns a live node or no node.
+  std::uint32_t refresh_order(const ParallelContext& ctx);
+  /// Cuts `order` into `chains` runs at evenly spaced landmarks, the first at `offset`; sets
+  /// owner, builds the start grids and returns the landmarks' positions in `order`.
+  std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
+                                           const ParallelContext& ctx);
+
+  /// Calls visit(entry) for the hashed nodes near triangle (a, b, c) that other chains than
+  /// `chain` held at the phase start, until visit returns true; returns whether it did.
+  template <class Visit>
+  bool any_foreign_near(const Point& a, const Point& b, const Point& c, std::size_t chain,
+                        Visit&& visit) const {
+    for (std::uint32_t mark : landmarks)
+      if (visit(ReflexGrid::Entry{this->b->pos[mark], mark})) return true;
+    for (std::size_t other = 0; other < chains; ++other)
+      if (other != chain && start_grids[other].any_near_triangle(a, b, c, visit)) return true;
+    return false;
+  }
+  std::size_t chains = 0;
+};
+
+/// Splits [0, count) into `parts` ranges of nearly equal size: part i is
+/// [count * i / parts, count * (i + 1) / parts).
+inline std::size_t part_begin(std::size_t count, std::size_t parts, std::size_t i) {
+  return count * i / parts;
+}
+
+}  // namespace pear::detail

@@ -1,0 +1,163 @@
+// Partition-and-cut and mark-and-cut on every corpus polygon and the synthetic families, at
+// several thread and partition counts: valid with exact area and n + 2h - 2 triangles, the same
+// status contract as the sequential engine, and the same triangles whatever the thread count.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "../support/corpus.hpp"
+#include "pear/generate.hpp"
+#include "pear/scheduler.hpp"
+
+namespace pear {
+namespace {
+
+using testing::check_polygon;
+using testing::CorpusFile;
+using testing::list_corpus;
+
+constexpr Algorithm variants[] = {Algorithm::partition_and_cut, Algorithm::mark_and_cut};
+
+struct Setting {
+  unsigned threads, partitions;
+};
+constexpr Setting settings[] = {{1, 2}, {2, 2}, {2, 3}, {3, 4}, {8, 8}};
+
+const char* name_of(Algorithm algorithm) {
+  return algorithm == Algorithm::partition_and_cut ? "partition-and-cut" : "mark-and-cut";
+}
+
+/// Every variant and setting is valid; the output depends on the partitions only.
+void check_variants(const Polygon& polygon, bool expect_valid, bool stuck = false) {
+  for (Algorithm algorithm : variants) {
+    for (EarHeuristic heuristic : {EarHeuristic::top, EarHeuristic::fast}) {
+      for (const Setting& s : settings) {
+        SCOPED_TRACE(std::string(name_of(algorithm)) + " threads " + std::to_string(s.threads) +
+                     " partitions " + std::to_string(s.partitions) +
+                     (heuristic == EarHeuristic::top ? " top" : " fast"));
+        const Options options{.algorithm = algorithm,
+                              .heuristic = heuristic,
+                              .threads = s.threads,
+                              .partitions = s.partitions};
+        if (stuck) {
+          testing::check_known_stuck(polygon, options);
+          continue;
+        }
+        const auto triangles = check_polygon(polygon, expect_valid, options);
+        if (s.threads == 1) continue;
+        Options one_thread = options;
+        one_thread.threads = 1;
+        EXPECT_EQ(triangulate(polygon, one_thread).triangles, triangles) << "not deterministic";
+      }
+    }
+  }
+}
+
+class Corpus : public ::testing::TestWithParam<CorpusFile> {};
+
+TEST_P(Corpus, EveryVariantIsValidAndDeterministic) {
+  const CorpusFile& file = GetParam();
+  for (const Polygon& polygon : testing::read_corpus_file(file))
+    check_variants(polygon, file.valid, testing::known_stuck(file.name));
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, Corpus,
+                         ::testing::ValuesIn(list_corpus("PEAR_CORPUS",
+                                                         {"earcut", "countries", "glyphs"})),
+                         testing::corpus_test_name);
+INSTANTIATE_TEST_SUITE_P(Shared, Corpus,
+                         ::testing::ValuesIn(list_corpus(
+                             "PEAR_SHARED_CORPUS", {"earcut", "countries", "glyphs", "synthetic"})),
+                         testing::corpus_test_name);
+INSTANTIATE_TEST_SUITE_P(SharedCounties, Corpus,
+                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"}, 7)),
+                         testing::corpus_test_name);
+INSTANTIATE_TEST_SUITE_P(SharedCoast, Corpus,
+                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"coast"})),
+                         testing::corpus_test_name);
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Corpus);
+
+class Synthetic : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Synthetic, EveryVariantIsValidAndDeterministic) {
+  for (std::size_t n : {700, 5000, 40000})
+    check_variants(generate_polygon(GetParam(), n, 11), true);
+}
+
+std::vector<std::string> kinds() {
+  std::vector<std::string> out;
+  for (std::string_view kind : generator_kinds()) out.emplace_back(kind);
+  return out;
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, Synthetic, ::testing::ValuesIn(kinds()), [](const auto& info) {
+  std::string name = info.param;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+  return name;
+});
+
+Polygon regular(std::size_t n, double inner, double outer) {
+  Ring ring;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(n);
+    const double r = i % 2 == 0 ? inner : outer;
+    ring.push_back({std::round(r * std::cos(angle) * 1e6), std::round(r * std::sin(angle) * 1e6)});
+  }
+  return {ring};
+}
+
+TEST(Tricky, MorePartitionsThanVertices) {
+  for (std::size_t n : {3, 4, 5, 8})
+    for (unsigned partitions : {8u, 64u, 1000u})
+      for (Algorithm algorithm : variants) {
+        const auto result =
+            triangulate(regular(n, 1, 1),
+                        Options{.algorithm = algorithm, .threads = 4, .partitions = partitions});
+        ASSERT_EQ(result.status, Status::ok);
+        EXPECT_EQ(result.triangles.size(), n - 2);
+        EXPECT_TRUE(validate(regular(n, 1, 1), result.triangles).valid);
+      }
+}
+
+TEST(Tricky, LandmarksOnReflexVertices) {
+  // Even positions are reflex (inner radius): with partitions dividing the vertex count, every
+  // landmark is a reflex vertex.
+  check_variants(regular(4096, 0.5, 1), true);
+}
+
+TEST(Tricky, CollinearRunsAcrossChainEnds) {
+  Ring ring;  // a square with 2000 collinear vertices on every side
+  for (int i = 0; i < 2000; ++i) ring.push_back({static_cast<double>(i), 0});
+  for (int i = 0; i < 2000; ++i) ring.push_back({2000, static_cast<double>(i)});
+  for (int i = 0; i < 2000; ++i) ring.push_back({2000.0 - i, 2000});
+  for (int i = 0; i < 2000; ++i) ring.push_back({0, 2000.0 - i});
+  check_variants({ring}, true);
+}
+
+TEST(Tricky, HolesTouchingAtVerticesAndBridges) {
+  // A 40 x 40 checkerboard of square holes touching at their corners: pinches everywhere.
+  Polygon polygon{{{0, 0}, {82, 0}, {82, 82}, {0, 82}}};
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      if ((i + j) % 2 == 0) {
+        const double x = 1 + 2.0 * i, y = 1 + 2.0 * j;
+        polygon.push_back({{x, y}, {x, y + 2}, {x + 2, y + 2}, {x + 2, y}});
+      }
+  check_variants(polygon, true);
+}
+
+TEST(Tricky, SelfIntersectingInputIsFlaggedAtEveryThreadCount) {
+  Polygon polygon = regular(2000, 0.5, 1);
+  std::swap(polygon[0][10], polygon[0][1500]);  // two crossing spikes
+  for (Algorithm algorithm : variants)
+    for (const Setting& s : settings) {
+      const auto result = triangulate(
+          polygon,
+          Options{.algorithm = algorithm, .threads = s.threads, .partitions = s.partitions});
+      EXPECT_EQ(result.status, Status::not_simple);
+    }
+}
+
+}  // namespace
+}  // namespace pear
