@@ -1,12 +1,203 @@
-// Placeholder until divide-and-conquer lands: the sequential engine does the whole cycle.
+// Paper §2.1, divide and conquer: vertical split lines at x quantiles cut the boundary into
+// parts (split_pieces.hpp), the parts are clipped in parallel by the sequential engine, and the
+// Steiner points are removed again (divide_conquer_repair.hpp). Anything that cannot be done
+// exactly falls back to the sequential engine on the whole boundary, which is never modified
+// before that point.
+#include <algorithm>
+
+#include "divide_conquer_repair.hpp"
+#include "split_pieces.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
+namespace {
+
+/// The pieces between two neighbouring split lines, lines [lo, hi) still to cut.
+struct Slab {
+  Pieces pieces;
+  std::uint32_t lo = 0, hi = 0;
+};
+
+/// What a part's clipping gives: triangles of input vertices only (already in caller indices),
+/// and the triangles at Steiner points, to be redone.
+struct PartResult {
+  TriangleList kept;
+  std::vector<SteinerTriangle> at_steiner;
+  std::vector<std::uint8_t> on_boundary;  ///< per triangle at Steiner points, see find_holes
+  bool ok = true;
+};
+
+/// Recursive halving (paper §2.1): the middle line first, then the middles of both halves, and
+/// so on; the slabs of one level are cut in parallel. Returns the slabs left to right.
+bool split_into_parts(const Boundary& b, std::vector<PieceCorner> cycle,
+                      std::vector<SplitLine>& lines, const ParallelContext& ctx,
+                      std::vector<Slab>& slabs) {
+  slabs.assign(1, Slab{});
+  slabs[0].pieces.corners = std::move(cycle);
+  slabs[0].pieces.close_piece();
+  slabs[0].hi = static_cast<std::uint32_t>(lines.size());
+  while (std::any_of(slabs.begin(), slabs.end(), [](const Slab& s) { return s.lo < s.hi; })) {
+    std::vector<std::size_t> first_child(slabs.size());
+    std::size_t children = 0;
+    for (std::size_t s = 0; s < slabs.size(); ++s)
+      first_child[s] = std::exchange(children, children + (slabs[s].lo < slabs[s].hi ? 2 : 1));
+    std::vector<Slab> next(children);
+    std::vector<std::uint8_t> ok(slabs.size(), 1);
+    ctx.run_tasks("split", slabs.size(), [&](std::size_t s) {
+      Slab& slab = slabs[s];
+      if (slab.lo == slab.hi) {
+        next[first_child[s]] = std::move(slab);
+        return;
+      }
+      const std::uint32_t mid = slab.lo + (slab.hi - slab.lo) / 2;
+      Slab& left = next[first_child[s]];
+      Slab& right = next[first_child[s] + 1];
+      left.lo = slab.lo, left.hi = mid, right.lo = mid + 1, right.hi = slab.hi;
+      PieceSplitter splitter;
+      ok[s] = splitter.split(b, lines, mid, slab.pieces, left.pieces, right.pieces);
+      slab.pieces = Pieces{};
+    });
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+    slabs = std::move(next);
+  }
+  return true;
+}
+
+/// Which edges of a piece's triangle lie on the input boundary: those along a boundary edge of
+/// the piece (by point, as the clipper may use either node at a pinch) that is not a split
+/// segment (two Steiner points of one line).
+std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners,
+                            const std::array<std::uint32_t, 3>& t) {
+  std::uint8_t mask = 0;
+  for (int c = 0; c < 3; ++c) {
+    const std::uint32_t from = t[c], to = t[(c + 1) % 3];
+    const std::uint32_t after = from + 1 == piece.size() ? 0 : from + 1;  // as linked
+    const bool split_segment = is_steiner(corners[from]) && is_steiner(corners[after]) &&
+                               corner_line(corners[from]) == corner_line(corners[after]);
+    if (piece.pos[after] == piece.pos[to] && !split_segment) mask |= 1 << c;
+  }
+  return mask;
+}
+
+/// Clips every piece of a part with the sequential engine, on the rounded Steiner points.
+void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pieces& pieces,
+               EarHeuristic heuristic, PartResult& result) {
+  Boundary piece;
+  EarClipper clipper;
+  TriangleList local;
+  for (std::size_t p = 0; p < pieces.count(); ++p) {
+    const PieceCorner* corners = &pieces.corners[pieces.starts[p]];
+    const std::uint32_t count = pieces.starts[p + 1] - pieces.starts[p];
+    piece.clear();
+    for (std::uint32_t i = 0; i < count; ++i) piece.add(corner_pos(b, lines, corners[i]), i);
+    for (std::uint32_t i = 0; i < count; ++i) piece.link(i, i + 1 == count ? 0 : i + 1);
+    local.clear();
+    if (count < 3 || !clipper.run(piece, 0, heuristic, local)) {
+      result.ok = false;
+      return;
+    }
+    for (const auto& t : local) {
+      const SteinerTriangle corner = {corners[t[0]], corners[t[1]], corners[t[2]]};
+      if (is_steiner(corner[0]) || is_steiner(corner[1]) || is_steiner(corner[2])) {
+        result.at_steiner.push_back(corner);
+        result.on_boundary.push_back(boundary_edges(piece, corners, t));
+        continue;
+      }
+      const std::uint32_t u = corner_index(corner[0]), v = corner_index(corner[1]),
+                          w = corner_index(corner[2]);
+      // Exact: a triangle of input vertices the rounding made flat or turned cannot stay.
+      if (!(orient2d(b.pos[u], b.pos[v], b.pos[w]) > 0)) {
+        result.ok = false;
+        return;
+      }
+      result.kept.push_back({b.vertex[u], b.vertex[v], b.vertex[w]});
+    }
+  }
+}
+
+/// Redoes the triangles at Steiner points from input vertices, the holes spread over tasks.
+bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
+                           const std::vector<PartResult>& parts, const ParallelContext& ctx,
+                           std::vector<TriangleList>& patches) {
+  std::vector<SteinerTriangle> at_steiner;
+  SteinerRepair repair;
+  bool found = false;
+  ctx.run_serial("find Steiner holes", [&] {
+    std::vector<std::uint8_t> on_boundary;
+    for (const PartResult& part : parts) {
+      at_steiner.insert(at_steiner.end(), part.at_steiner.begin(), part.at_steiner.end());
+      on_boundary.insert(on_boundary.end(), part.on_boundary.begin(), part.on_boundary.end());
+    }
+    found = repair.find_holes(b, lines, at_steiner, std::move(on_boundary));
+  });
+  if (!found) return false;
+  const std::size_t holes = repair.hole_count();
+  const std::size_t tasks = std::min<std::size_t>(std::max(1u, ctx.partitions), holes);
+  patches.assign(tasks, {});
+  std::vector<std::vector<SteinerTriangle>> fills(tasks);
+  std::vector<std::uint8_t> ok(tasks, 1);
+  ctx.run_tasks("fill Steiner holes", tasks, [&](std::size_t task) {
+    for (std::size_t h = task * holes / tasks; h < (task + 1) * holes / tasks && ok[task]; ++h)
+      ok[task] = repair.triangulate_hole(h, b, ctx.heuristic, patches[task], fills[task]);
+  });
+  if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+  bool fits = false;
+  ctx.run_serial("check Steiner holes", [&] {
+    for (std::size_t task = 1; task < tasks; ++task)
+      fills[0].insert(fills[0].end(), fills[task].begin(), fills[task].end());
+    fits = repair.check_chain(b, lines, tasks > 0 ? fills[0] : std::vector<SteinerTriangle>{});
+  });
+  return fits;
+}
+
+/// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.
+/// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
+bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
+                       std::vector<SplitLine>& lines, const ParallelContext& ctx,
+                       TriangleList& out) {
+  std::vector<Slab> slabs;
+  if (!split_into_parts(b, std::move(cycle), lines, ctx, slabs)) return false;
+  std::vector<PartResult> parts(slabs.size());
+  ctx.run_tasks("clip parts", slabs.size(), [&](std::size_t s) {
+    clip_part(b, lines, slabs[s].pieces, ctx.heuristic, parts[s]);
+  });
+  if (std::any_of(parts.begin(), parts.end(), [](const PartResult& p) { return !p.ok; }))
+    return false;
+  std::vector<TriangleList> patches;
+  if (!remove_steiner_points(b, lines, parts, ctx, patches)) return false;
+  ctx.run_serial("gather", [&] {
+    for (const PartResult& part : parts) out.insert(out.end(), part.kept.begin(), part.kept.end());
+    for (const TriangleList& patch : patches) out.insert(out.end(), patch.begin(), patch.end());
+  });
+  return true;
+}
+
+}  // namespace
 
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
                         TriangleList& out, std::uint32_t& best_effort_vertex) {
+  std::vector<PieceCorner> cycle;
+  std::vector<SplitLine> lines;
+  ctx.run_serial("place split lines", [&] {
+    std::uint32_t v = entry;
+    do {
+      cycle.push_back(v);
+      v = b.next[v];
+    } while (v != entry && cycle.size() <= b.size());
+    if (ctx.partitions < 2 || cycle.size() < 4 || cycle.size() > b.size()) return;
+    for (double after : split_positions(b, cycle, ctx.partitions))
+      lines.emplace_back().after = after;
+  });
+  const char* phase = "clip sequentially";
+  if (!lines.empty()) {
+    const std::size_t start = out.size();
+    if (split_clip_repair(b, std::move(cycle), lines, ctx, out)) return true;
+    out.resize(start);
+    phase = "fall back to sequential";  // RunProfile shows how often this happens
+  }
   EarClipper clipper;
-  const bool complete = clipper.run(b, entry, ctx.heuristic, out);
+  bool complete = true;
+  ctx.run_serial(phase, [&] { complete = clipper.run(b, entry, ctx.heuristic, out); });
   best_effort_vertex = clipper.best_effort_vertex();
   return complete;
 }

@@ -1,0 +1,75 @@
+// Paper §2.1, Fig. 2: removing the Steiner points again. The paper removes the triangles around
+// each pair of Steiner points and re-triangulates the double-star-shaped hole. We remove every
+// triangle that has a Steiner corner at once; each connected hole that is left is bounded by
+// input vertices only (the two halves of a split input edge, a -> s -> b, become a -> b again)
+// and is re-triangulated by the sequential ear clipper with exact predicates.
+//
+// Why the result is right although the parts were clipped on rounded Steiner points: if the
+// triangles' boundaries add up (as a chain of directed edges between points) to the input
+// boundary, and every triangle is strictly counterclockwise, then each point is covered exactly
+// winding-number-many times: once inside the polygon, never outside. The parts' triangles add
+// up to the boundary with Steiner points (the split segments cancel); check_chain() verifies
+// that the holes' triangles make up exactly for the removed ones and the Steiner points; the
+// orientation of every triangle is checked exactly. Anything else falls back.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "../earclip/ear_clipper.hpp"
+#include "split_pieces.hpp"
+
+namespace pear::detail {
+
+/// A triangle of a part with at least one Steiner corner, counterclockwise.
+using SteinerTriangle = std::array<PieceCorner, 3>;
+
+class SteinerRepair {
+ public:
+  /// Finds the holes the triangles leave: one boundary cycle of input nodes per connected
+  /// group of triangles. Corners are compared by point (nodes at one position, a Steiner point
+  /// on both sides of a bridge are one), as the clippers may use either at a pinch. Returns
+  /// false when a group is not a disk or the triangles do not fit together. Bit c of
+  /// on_boundary[t] says that edge c -> c + 1 of triangle t lies on the input boundary.
+  bool find_holes(const Boundary& b, const std::vector<SplitLine>& lines,
+                  const std::vector<SteinerTriangle>& triangles,
+                  std::vector<std::uint8_t> on_boundary);
+
+  std::size_t hole_count() const { return starts_.size() - 1; }
+
+  /// Triangulates hole h from its input vertices; appends the triangles in caller indices to
+  /// out and in corners to `corners`. Returns false unless every triangle is strictly
+  /// counterclockwise.
+  bool triangulate_hole(std::size_t h, const Boundary& b, EarHeuristic heuristic, TriangleList& out,
+                        std::vector<SteinerTriangle>& corners) const;
+
+  /// Whether the holes' triangles (`fill`) have the boundary of the removed triangles with
+  /// every input edge a -> s1 -> ... -> b through Steiner points replaced by a -> b.
+  bool check_chain(const Boundary& b, const std::vector<SplitLine>& lines,
+                   const std::vector<SteinerTriangle>& fill) const;
+
+ private:
+  struct DirectedEdge {
+    PieceCorner from, to;
+    std::uint32_t id;  ///< triangle * 3 + corner of `from`
+  };
+  static constexpr std::uint32_t none = UINT32_MAX;
+  void canonicalize(const Boundary& b, const std::vector<SplitLine>& lines,
+                    const std::vector<SteinerTriangle>& triangles);
+  PieceCorner canonical(PieceCorner c) const;
+  std::uint32_t find(PieceCorner from, PieceCorner to) const;
+  std::uint32_t across(std::uint32_t edge) const;
+  std::uint32_t next_on_boundary(std::uint32_t edge) const;
+  bool walk_hole(std::uint32_t start, std::vector<std::uint8_t>& visited);
+  bool holes_are_disks(const std::vector<std::uint32_t>& hole_starts) const;
+
+  std::vector<std::pair<PieceCorner, PieceCorner>> canonical_;  ///< sorted by corner
+  std::vector<SteinerTriangle> triangles_;                      ///< in canonical corners
+  std::vector<std::uint8_t> on_boundary_;
+  std::vector<DirectedEdge> edges_;   ///< sorted by (from, to)
+  std::vector<std::uint32_t> nodes_;  ///< the holes' input nodes, one hole after another
+  std::vector<std::uint32_t> starts_{0};
+};
+
+}  // namespace pear::detail

@@ -1,0 +1,189 @@
+#include "split_pieces.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace pear::detail {
+namespace {
+
+/// Sign of (y of c) - (y of d) where both edges meet the vertical line between their endpoints'
+/// x; exact for edges that do not cross (the sweep-line order of Bentley–Ottmann): the edge
+/// that starts further right is placed by its start against the other edge's supporting line,
+/// by its end when its start lies on that line.
+template <class Crossing>
+int compare_along_line(const Crossing& c, const Crossing& d) {
+  if (c.low.x >= d.low.x) {
+    double o = orient2d(d.low, d.high, c.low);
+    if (o == 0) o = orient2d(d.low, d.high, c.high);
+    return (o > 0) - (o < 0);
+  }
+  double o = orient2d(c.low, c.high, d.low);
+  if (o == 0) o = orient2d(c.low, c.high, d.high);
+  return (o < 0) - (o > 0);
+}
+
+/// The rounded point where the edge low-high meets x. The same for both directions of a bridge
+/// (the edge is always taken from its left end), and never outside the edge's y range.
+double rounded_y(const Point& low, const Point& high, double x) {
+  const double t = (x - low.x) / (high.x - low.x);
+  const double y = low.y + t * (high.y - low.y);
+  if (std::isnan(y)) return low.y;
+  return std::clamp(y, std::min(low.y, high.y), std::max(low.y, high.y));
+}
+
+void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) {
+  out.corners.insert(out.corners.end(), corners, corners + count);
+  out.close_piece();
+}
+
+}  // namespace
+
+std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
+                                    unsigned parts) {
+  // Quantiles of a sample of at most 2^16 x values: balanced enough, and O(n) to take.
+  constexpr std::size_t sample_limit = std::size_t{1} << 16;
+  const std::size_t stride = std::max<std::size_t>(1, cycle.size() / sample_limit);
+  std::vector<double> xs;
+  for (std::size_t i = 0; i < cycle.size(); i += stride)
+    xs.push_back(b.pos[corner_index(cycle[i])].x);
+  std::sort(xs.begin(), xs.end());
+  std::vector<double> after;
+  for (std::size_t i = 1; i < parts && !xs.empty(); ++i) {
+    const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
+    const double v = xs[m - 1];
+    if (v < xs.back() && (after.empty() || after.back() < v)) after.push_back(v);
+  }
+  return after;
+}
+
+bool PieceSplitter::place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
+                          const Pieces& in) {
+  SplitLine& split_line = lines[line];
+  double next = std::numeric_limits<double>::infinity();
+  for (PieceCorner c : in.corners) {
+    const double x = corner_pos(b, lines, c).x;
+    if (x > split_line.after && x < next) next = x;
+  }
+  if (std::isinf(next)) return false;
+  // Never through a vertex (paper §2.1): strictly between two consecutive corner x values.
+  double x = split_line.after * 0.5 + next * 0.5;
+  if (!(split_line.after < x && x < next)) x = std::nextafter(split_line.after, next);
+  if (!(split_line.after < x && x < next)) return false;
+  split_line.x = x;
+  return true;
+}
+
+bool PieceSplitter::find_crossings(const Boundary& b, std::vector<SplitLine>& lines,
+                                   std::uint32_t line, const PieceCorner* corners,
+                                   std::uint32_t count) {
+  crossings_.clear();
+  const double x = lines[line].x;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const PieceCorner u = corners[i], v = corners[i + 1 == count ? 0 : i + 1];
+    const bool u_left = corner_pos(b, lines, u).x < x;
+    if (u_left == (corner_pos(b, lines, v).x < x)) continue;
+    // Only sub-segments of input edges cross: split segments are vertical on other lines.
+    const std::uint32_t from =
+        is_steiner(u) ? lines[corner_line(u)].steiner[corner_index(u)].from : corner_index(u);
+    const std::uint32_t to =
+        is_steiner(v) ? lines[corner_line(v)].steiner[corner_index(v)].to : corner_index(v);
+    const Point& a = b.pos[from];
+    const Point& c = b.pos[to];
+    const Point low = a.x < c.x ? a : c, high = a.x < c.x ? c : a;
+    if (!(low.x < x && x < high.x)) return false;
+    std::vector<SteinerPoint>& steiner = lines[line].steiner;
+    const PieceCorner corner = steiner_corner(line, static_cast<std::uint32_t>(steiner.size()));
+    steiner.push_back({from, to, {x, rounded_y(low, high, x)}});
+    crossings_.push_back({i, corner, low, high, u_left, 0});
+  }
+  return true;
+}
+
+/// Sorts the crossings bottom to top and pairs them: going up, a rightward edge starts an
+/// interior segment and a leftward one ends it. At one point (the two sides of a bridge) the
+/// leftward comes first, as the interior lies on both sides of a bridge.
+bool PieceSplitter::pair_crossings(const std::vector<SplitLine>& lines, std::uint32_t line) {
+  const std::size_t count = crossings_.size();
+  if (count % 2 != 0) return false;
+  const auto& steiner = lines[line].steiner;
+  const auto y = [&](std::uint32_t k) {
+    return steiner[corner_index(crossings_[k].steiner)].pos.y;
+  };
+  order_.resize(count);
+  std::iota(order_.begin(), order_.end(), 0u);
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t i, std::uint32_t j) {
+    if (y(i) != y(j)) return y(i) < y(j);
+    if (crossings_[i].rightward != crossings_[j].rightward) return !crossings_[i].rightward;
+    return i < j;
+  });
+  // The rounded order is nearly right; insertion sort with the exact order repairs it (and,
+  // unlike std::sort, stays harmless if crossing input edges make the order inconsistent).
+  const auto before = [&](std::uint32_t i, std::uint32_t j) {
+    const int order = compare_along_line(crossings_[i], crossings_[j]);
+    return order < 0 || (order == 0 && !crossings_[i].rightward && crossings_[j].rightward);
+  };
+  for (std::size_t i = 1; i < count; ++i)
+    for (std::size_t j = i; j > 0 && before(order_[j], order_[j - 1]); --j)
+      std::swap(order_[j], order_[j - 1]);
+  for (std::size_t k = 0; k < count; k += 2) {
+    const std::uint32_t bottom = order_[k], top = order_[k + 1];
+    if (!crossings_[bottom].rightward || crossings_[top].rightward) return false;
+    crossings_[bottom].partner = top;
+    crossings_[top].partner = bottom;
+  }
+  return true;
+}
+
+/// Walks the pieces on one side: a chain of the cycle on that side, then along the line to the
+/// partner crossing (upward on the left side, downward on the right), the next chain, and so on.
+bool PieceSplitter::emit(const PieceCorner* corners, std::uint32_t count, bool left_side,
+                         Pieces& out) {
+  const std::uint32_t total = static_cast<std::uint32_t>(crossings_.size());
+  used_.assign(total, 0);
+  for (std::uint32_t first = 0; first < total; ++first) {
+    // The chain after a rightward crossing lies right of the line.
+    if (crossings_[first].rightward == left_side || used_[first]) continue;
+    std::uint32_t k = first;
+    do {
+      used_[k] = 1;
+      out.corners.push_back(crossings_[k].steiner);
+      const std::uint32_t end = k + 1 == total ? 0 : k + 1;
+      for (std::uint32_t i = crossings_[k].at;;) {
+        i = i + 1 == count ? 0 : i + 1;
+        out.corners.push_back(corners[i]);
+        if (i == crossings_[end].at) break;
+      }
+      out.corners.push_back(crossings_[end].steiner);
+      k = crossings_[end].partner;
+    } while (!used_[k]);
+    if (k != first) return false;
+    out.close_piece();
+  }
+  return true;
+}
+
+bool PieceSplitter::split(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
+                          const Pieces& in, Pieces& left, Pieces& right) {
+  if (!place(b, lines, line, in)) {  // no corner x beyond the line's place: nothing to cut
+    for (std::size_t p = 0; p < in.count(); ++p)
+      append_piece(&in.corners[in.starts[p]], in.starts[p + 1] - in.starts[p], left);
+    return true;
+  }
+  const double x = lines[line].x;
+  for (std::size_t p = 0; p < in.count(); ++p) {
+    const PieceCorner* corners = &in.corners[in.starts[p]];
+    const std::uint32_t count = in.starts[p + 1] - in.starts[p];
+    if (!find_crossings(b, lines, line, corners, count)) return false;
+    if (crossings_.empty()) {
+      append_piece(corners, count, corner_pos(b, lines, corners[0]).x < x ? left : right);
+      continue;
+    }
+    if (!pair_crossings(lines, line) || !emit(corners, count, true, left) ||
+        !emit(corners, count, false, right))
+      return false;
+  }
+  return true;
+}
+
+}  // namespace pear::detail

@@ -1,0 +1,95 @@
+// Paper §2.1: the bridged boundary cut along vertical split lines into pieces. A variant of
+// Sutherland–Hodgman: the crossings of a cycle with the line are sorted along it exactly and
+// paired (interior segments), so each side gets weakly simple cycles, not one polygon with
+// overlapping edges. Steiner points stay symbolic: each names the input edge it lies on; its
+// rounded coordinates only guide the parts' ear clippers, and every triangle at a Steiner point
+// is redone exactly from input vertices afterwards (divide_conquer_repair.hpp).
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "../earclip/boundary.hpp"
+
+namespace pear::detail {
+
+/// A corner of a piece: an input node of the boundary, or a Steiner point on a split line.
+/// Low 32 bits: the node or the Steiner point's index; high 32 bits: 0 for a node, else line + 1.
+using PieceCorner = std::uint64_t;
+
+inline bool is_steiner(PieceCorner c) {
+  return (c >> 32) != 0;
+}
+inline std::uint32_t corner_index(PieceCorner c) {
+  return static_cast<std::uint32_t>(c);
+}
+inline std::uint32_t corner_line(PieceCorner c) {
+  return static_cast<std::uint32_t>(c >> 32) - 1;
+}
+inline PieceCorner steiner_corner(std::uint32_t line, std::uint32_t index) {
+  return (PieceCorner{line} + 1) << 32 | index;
+}
+
+struct SteinerPoint {
+  std::uint32_t from, to;  ///< the input edge from -> to (boundary nodes) it lies on
+  Point pos;               ///< x exactly the line's, y rounded: for the parts' clippers only
+};
+
+struct SplitLine {
+  double after = 0;  ///< the vertex x the line is placed right after (paper: the m_i-th x)
+  double x = std::numeric_limits<double>::quiet_NaN();  ///< NaN until placed, or unused
+  std::vector<SteinerPoint> steiner;
+};
+
+/// Counterclockwise cycles of corners, one after another.
+struct Pieces {
+  std::vector<PieceCorner> corners;
+  std::vector<std::uint32_t> starts{0};  ///< piece p is corners[starts[p], starts[p + 1])
+
+  std::size_t count() const { return starts.size() - 1; }
+  void close_piece() { starts.push_back(static_cast<std::uint32_t>(corners.size())); }
+};
+
+inline const Point& corner_pos(const Boundary& b, const std::vector<SplitLine>& lines,
+                               PieceCorner c) {
+  return is_steiner(c) ? lines[corner_line(c)].steiner[corner_index(c)].pos
+                       : b.pos[corner_index(c)];
+}
+
+/// The x values the split lines go right after: the ceil(i * n / parts)-th smallest vertex x
+/// (i = 1 .. parts - 1) of a deterministic sample of the cycle, without repeats; fewer lines
+/// when the x values do not allow parts - 1 distinct ones.
+std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
+                                    unsigned parts);
+
+/// Splits pieces along one line; keeps its scratch memory between calls.
+class PieceSplitter {
+ public:
+  /// Places lines[line] strictly between lines[line].after and the next larger corner x of
+  /// `in`, then cuts every piece of `in` along it into `left` and `right` (appended). Returns
+  /// false when the crossings of a piece do not pair up (the input is not weakly simple).
+  bool split(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line, const Pieces& in,
+             Pieces& left, Pieces& right);
+
+ private:
+  struct Crossing {
+    std::uint32_t at;       ///< the piece edge corners[at] -> corners[at + 1] crosses
+    PieceCorner steiner;    ///< the Steiner point made there
+    Point low, high;        ///< the input edge's endpoints, low.x < line x < high.x
+    bool rightward;         ///< the edge runs from left to right: the interior is above
+    std::uint32_t partner;  ///< the crossing at the other end of its interior segment
+  };
+  bool place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
+             const Pieces& in);
+  bool find_crossings(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
+                      const PieceCorner* corners, std::uint32_t count);
+  bool pair_crossings(const std::vector<SplitLine>& lines, std::uint32_t line);
+  bool emit(const PieceCorner* corners, std::uint32_t count, bool left_side, Pieces& out);
+
+  std::vector<Crossing> crossings_;   ///< in cycle order
+  std::vector<std::uint32_t> order_;  ///< crossings_ indices bottom to top along the line
+  std::vector<std::uint8_t> used_;
+};
+
+}  // namespace pear::detail
