@@ -43,18 +43,19 @@ void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::
   }
 }
 
-/// Pairs the border half-edges again by their endpoints: the sets' flips moved them to other
-/// slots without telling the other side. Returns one half-edge of each pair, sorted.
+/// Pairs the border half-edges again by their endpoints' positions: the sets' flips moved them to
+/// other slots without telling the other side. Returns one half-edge of each pair, sorted.
 std::vector<std::uint32_t> relink_borders(Mesh& mesh,
                                           const std::vector<std::vector<std::uint32_t>>& sets) {
   std::vector<std::uint32_t> all;
   for (const auto& borders : sets) all.insert(all.end(), borders.begin(), borders.end());
-  const auto key = [&](std::uint32_t h) {
-    const std::uint64_t u = mesh.origin(h), v = mesh.destination(h);
-    return std::min(u, v) << 32 | std::max(u, v);
+  // By position, not caller index: see pair_by_position in mesh.cpp.
+  const auto ends = [&](std::uint32_t h) {
+    return EdgeEnds(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
   };
   std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
-    return key(h) != key(g) ? key(h) < key(g) : h < g;
+    const EdgeEnds e = ends(h), f = ends(g);
+    return e != f ? e < f : h < g;
   });
   std::vector<std::uint32_t> first_of_pair;
   for (std::size_t i = 0; i + 1 < all.size(); i += 2) {

@@ -44,7 +44,42 @@ void counting_sort(const std::vector<std::uint32_t>& in, const std::vector<std::
   for (std::uint32_t e : in) out[start[key[e]]++] = e;
 }
 
+bool pair(Mesh& mesh, std::uint32_t h, std::uint32_t g) {
+  // The same direction: the two triangles overlap.
+  if (mesh.points[mesh.origin(h)] == mesh.points[mesh.origin(g)]) return false;
+  mesh.twin[h] = g;
+  mesh.twin[g] = h;
+  ++mesh.interior_edges;
+  return true;
+}
+
+/// Where rings touch, two caller indices share a point, and the triangles on the two sides of a
+/// diagonal there, or a ring edge and its triangle, may use different ones. The edges the index
+/// matching left alone are few: they are matched again by their endpoints' positions with a
+/// plain sort. A ring edge among them keeps its triangle's edge a constraint.
+bool pair_by_position(Mesh& mesh, const EdgeKeys& keys, std::vector<std::uint32_t>& loose) {
+  const auto ends = [&](std::uint32_t e) {
+    return EdgeEnds(mesh.points[keys.low[e]], mesh.points[keys.high[e]]);
+  };
+  std::sort(loose.begin(), loose.end(), [&](std::uint32_t h, std::uint32_t g) {
+    const EdgeEnds e = ends(h), f = ends(g);
+    return e != f ? e < f : h < g;
+  });
+  for (std::size_t i = 0, j = 0; i < loose.size(); i = j) {
+    std::size_t rings = 0;
+    for (j = i; j < loose.size() && ends(loose[j]) == ends(loose[i]); ++j)
+      rings += loose[j] >= keys.half_edges ? 1 : 0;
+    if (j - i - rings > 2) return false;
+    if (j - i == 2 && rings == 0 && !pair(mesh, loose[i], loose[i + 1])) return false;
+  }
+  return true;
+}
+
 }  // namespace
+
+EdgeEnds::EdgeEnds(const Point& p, const Point& q) : low(p), high(q) {
+  if (lexicographic_less(q, p)) std::swap(low, high);
+}
 
 bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, TriangleList& triangles,
                 Mesh& mesh) {
@@ -60,6 +95,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   for (std::size_t e = 0; e < order.size(); ++e) order[e] = static_cast<std::uint32_t>(e);
   counting_sort(order, keys.high, points.size(), by_high);
   counting_sort(by_high, keys.low, points.size(), order);
+  std::vector<std::uint32_t> loose;  // matched to nothing by index: see pair_by_position
   for (std::size_t i = 0; i < order.size();) {
     std::size_t j = i, rings = 0;
     for (; j < order.size() && keys.low[order[j]] == keys.low[order[i]] &&
@@ -69,15 +105,13 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     const std::size_t uses = j - i - rings;
     if (uses > 2) return false;
     if (uses == 2 && rings == 0) {
-      const std::uint32_t h = order[i], g = order[i + 1];
-      if (mesh.origin(h) == mesh.origin(g)) return false;  // same direction: overlap
-      mesh.twin[h] = g;
-      mesh.twin[g] = h;
-      ++mesh.interior_edges;
+      if (!pair(mesh, order[i], order[i + 1])) return false;
+    } else if (uses + rings == 1) {
+      loose.push_back(order[i]);
     }
     i = j;
   }
-  return true;
+  return pair_by_position(mesh, keys, loose);
 }
 
 bool must_flip(const Mesh& mesh, std::uint32_t h) {

@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "../earclip/boundary.hpp"
 #include "../earclip/clean.hpp"
 #include "../earclip/ear_clipper.hpp"
 
@@ -26,6 +27,17 @@ struct Mesh {
   }
   std::uint32_t origin(std::uint32_t h) const { return corner(h, 0); }
   std::uint32_t destination(std::uint32_t h) const { return corner(h, 1); }
+};
+
+/// An edge's endpoints by position, lower first (lexicographically): the same for both
+/// half-edges, even where touching rings give one point two caller indices.
+struct EdgeEnds {
+  Point low, high;
+  EdgeEnds(const Point& p, const Point& q);
+  friend bool operator==(const EdgeEnds&, const EdgeEnds&) = default;
+  friend bool operator<(const EdgeEnds& e, const EdgeEnds& f) {
+    return e.low != f.low ? lexicographic_less(e.low, f.low) : lexicographic_less(e.high, f.high);
+  }
 };
 
 /// The half-edge after h in its triangle (counterclockwise).
