@@ -56,7 +56,8 @@ std::uint32_t SharedBoundary::refresh_order(const ParallelContext& ctx) {
 
 std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count,
                                                          std::size_t offset,
-                                                         const ParallelContext& ctx) {
+                                                         const ParallelContext& ctx,
+                                                         bool removable) {
   chains = chain_count;
   std::vector<std::size_t> marks(chains);
   const std::size_t count = order.size();
@@ -77,7 +78,7 @@ std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count
     for (std::size_t i = (marks[chain] + 1) % count; i != marks[(chain + 1) % chains];
          i = (i + 1) % count)
       if (hashed[order[i]]) nodes.push_back(order[i]);
-    start_grids[chain].build(*b, nodes, false);
+    start_grids[chain].build(*b, nodes, removable);
   });
   return marks;
 }

@@ -35,9 +35,10 @@ struct SharedBoundary {
   /// Refreshes `order` from a live node of the cycle; returns a live node or no node.
   std::uint32_t refresh_order(const ParallelContext& ctx);
   /// Cuts `order` into `chains` runs at evenly spaced landmarks, the first at `offset`; sets
-  /// owner, builds the start grids and returns the landmarks' positions in `order`.
+  /// owner, builds the start grids (`removable`: their owners may take nodes out of them) and
+  /// returns the landmarks' positions in `order`.
   std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
-                                           const ParallelContext& ctx);
+                                           const ParallelContext& ctx, bool removable = false);
 
   /// Calls visit(entry) for the hashed nodes near triangle (a, b, c) that other chains than
   /// `chain` held at the phase start, until visit returns true; returns whether it did.
@@ -49,6 +50,11 @@ struct SharedBoundary {
     for (std::size_t other = 0; other < chains; ++other)
       if (other != chain && start_grids[other].any_near_triangle(a, b, c, visit)) return true;
     return false;
+  }
+  /// The same for the hashed nodes of every chain.
+  template <class Visit>
+  bool any_hashed_near(const Point& a, const Point& b, const Point& c, Visit&& visit) const {
+    return any_foreign_near(a, b, c, chains, visit);
   }
   std::size_t chains = 0;
 };
