@@ -15,7 +15,8 @@ if [[ ! -f $build/build.ninja ]]; then
   CC=clang CXX=clang++ meson setup "$build" -Dfuzz=enabled -Dtests=disabled -Dbench=disabled \
     -Dcli=disabled -Db_sanitize=address,undefined -Db_lundef=false >/dev/null
 fi
-ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" >/dev/null
+# One build at a time in the build folder, so that several targets can be started at once.
+flock "$build/.fuzz-build.lock" ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" >/dev/null
 work=$build/fuzz-corpus/$target
 artifacts=$build/fuzz-artifacts/$target/
 mkdir -p "$work" "$artifacts"

@@ -121,5 +121,14 @@ INSTANTIATE_TEST_SUITE_P(Synthetic, Families, ::testing::ValuesIn(kinds()), [](c
   return name;
 });
 
+// Found by fuzz/cdt (corpus/fuzz/cdt/crash-hole-in-reflex-corner): the hole touches the outer
+// ring at its reflex corner, so triangles on one side of edge (4,4)-(8,8) use the outer ring's
+// copy of (4,4) and on the other the hole's; the flip across that edge was missed.
+TEST(Cdt, FlipAcrossAnEdgeFromAPointTheHoleTouches) {
+  const Polygon polygon = {{{0, 0}, {4, 0}, {4, 4}, {8, 4}, {8, 8}, {0, 8}},
+                           {{4, 4}, {4, 6}, {2, 6}, {2, 4}}};
+  expect_cdt_everywhere(polygon, "hole in the reflex corner");
+}
+
 }  // namespace
 }  // namespace pear::testing

@@ -271,5 +271,33 @@ TEST(EngineStatistics, ReflexVertexBlocksEars) {
   EXPECT_EQ(stats.ears, 2u);
 }
 
+// Found by fuzz/bridged (corpus/fuzz/bridged/crash-hole-touching-three-vertices): a square hole
+// whose corners touch the outer ring at three vertices came back not_simple.
+TEST_P(Engine, HoleTouchingOuterRingAtThreeVertices) {
+  const Ring outer = {{1, 3}, {1, 2}, {0, 2}, {0, 1}, {0, 0}, {1, 0},
+                      {2, 0}, {2, 1}, {3, 1}, {3, 2}, {2, 2}, {2, 3}};
+  const Ring hole = {{2, 1}, {1, 1}, {1, 2}, {2, 2}};
+  expect_valid(Polygon{outer, hole}, GetParam(), "hole touching at three vertices");
+}
+
+// Found by fuzz/bridged (crash-plus-with-center-hole): the hole fills a plus sign's centre and
+// touches the outer ring at four vertices, cutting the polygon into four arms; the result was
+// Status::ok with a gap.
+TEST_P(Engine, HoleTouchingOuterRingAtFourVerticesSplitsThePolygon) {
+  const Ring outer = {{3, 3}, {3, 2}, {3, 1}, {2, 1}, {2, 0}, {1, 0}, {1, 1},
+                      {0, 1}, {0, 2}, {0, 3}, {1, 3}, {1, 4}, {2, 4}, {2, 3}};
+  const Ring hole = {{2, 2}, {2, 3}, {1, 3}, {1, 2}, {1, 1}, {2, 1}};
+  expect_valid(Polygon{outer, hole}, GetParam(), "plus with centre hole");
+}
+
+// Found by fuzz/bridged (crash-chain-of-lobes): one ring of three lobes touching at two vertices
+// came back Status::ok with 15 triangles instead of 16 and an uncovered edge.
+TEST_P(Engine, RingTouchingItselfInAChainOfThreeLobes) {
+  const Ring r = {{1, 2}, {0, 2}, {0, 3}, {0, 4}, {1, 4}, {1, 5}, {2, 5}, {3, 5},
+                  {3, 4}, {3, 3}, {2, 3}, {2, 4}, {1, 4}, {1, 3}, {1, 2}, {2, 2},
+                  {2, 1}, {3, 1}, {3, 0}, {2, 0}, {1, 0}, {1, 1}};
+  expect_valid(Polygon{r}, GetParam(), "chain of lobes");
+}
+
 }  // namespace
 }  // namespace pear
