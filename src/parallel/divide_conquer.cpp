@@ -5,6 +5,7 @@
 // before that point.
 #include <algorithm>
 
+#include "divide_conquer_fans.hpp"
 #include "divide_conquer_repair.hpp"
 #include "split_pieces.hpp"
 #include "variants.hpp"
@@ -84,6 +85,7 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
                EarHeuristic heuristic, PartResult& result) {
   Boundary piece;
   EarClipper clipper;
+  FanReducer fans;
   TriangleList local;
   for (std::size_t p = 0; p < pieces.count(); ++p) {
     const PieceCorner* corners = &pieces.corners[pieces.starts[p]];
@@ -96,6 +98,7 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
       result.ok = false;
       return;
     }
+    fans.reduce(piece, corners, local);
     for (const auto& t : local) {
       const SteinerTriangle corner = {corners[t[0]], corners[t[1]], corners[t[2]]};
       if (is_steiner(corner[0]) || is_steiner(corner[1]) || is_steiner(corner[2])) {

@@ -41,8 +41,8 @@ void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) 
 
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
                                     unsigned parts) {
-  // Quantiles of a sample of at most 2^16 x values: balanced enough, and O(n) to take.
-  constexpr std::size_t sample_limit = std::size_t{1} << 16;
+  // Quantiles of a sample of at most 2^14 x values: balanced enough, and O(n) to take.
+  constexpr std::size_t sample_limit = std::size_t{1} << 14;
   const std::size_t stride = std::max<std::size_t>(1, cycle.size() / sample_limit);
   std::vector<double> xs;
   for (std::size_t i = 0; i < cycle.size(); i += stride)
