@@ -5,6 +5,7 @@ set -euo pipefail
 packages=(meson ninja-build g++ pkg-config zlib1g-dev python3)
 if [[ "${1:-}" != minimal ]]; then
   packages+=(libgtest-dev libgmp-dev libbenchmark-dev libcgal-dev libgeos-dev libtbb-dev
+             libglu1-mesa-dev python3-matplotlib
              clang clang-format)
 fi
 missing=()

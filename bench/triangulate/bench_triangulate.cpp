@@ -1,11 +1,11 @@
-// Triangulation time, memory and quality: pear against CGAL and GEOS in one binary, on the
-// synthetic families and the shared corpus. See run.sh and table.py.
+// Triangulation time, memory and quality: pear's algorithms against CGAL, GEOS and GLU in one
+// binary, on the synthetic families and the shared corpus. See bench/run.sh and bench/report/.
 //
 // Each benchmark is one input and one triangulator. The input is converted to the
 // triangulator's own form untimed. Once per benchmark (not per repetition) an untimed run
 // counts peak heap bytes, and its triangles are checked by pear::validate and measured by
-// pear::quality. Then the timed runs (CPU time: every triangulator here is single-threaded,
-// which is steadier on a shared machine).
+// pear::quality. Then the timed runs, in wall-clock time (the parallel variants use several
+// threads; every benchmark is timed alike so that ratios compare like with like).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -18,6 +18,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -52,13 +53,25 @@ const LoadedInput& load(const Input& input) {
   return loaded;
 }
 
+/// What the untimed first run found, kept across repetitions of the same benchmark.
+struct FirstRun {
+  std::size_t triangles = 0;
+  std::size_t peak_bytes = 0;
+  double seconds = 0;
+  Triangles result;
+  std::map<std::string, double> statistics;
+};
+
 void set_result_counters(benchmark::State& state, const std::string& label,
-                         const LoadedInput& input, std::size_t triangles, std::size_t peak_bytes,
-                         const Triangles& result) {
+                         const LoadedInput& input, const Triangulator& triangulator,
+                         std::size_t triangles, const FirstRun& first) {
+  const Triangles& result = first.result;
   const auto n = static_cast<double>(input.flat.points.size());
   const pear::QualityStatistics quality = pear::quality(input.flat.points, result);
   pear::ValidateOptions options;
   options.max_messages = 1;
+  // The CDT triangulators must also pass the exact empty-circle check.
+  options.check_delaunay = triangulator.name.find("cdt") != std::string::npos;
   const pear::ValidationReport report = pear::validate(input.flat, result, options);
   if (!report.valid && !report.messages.empty())
     std::fprintf(stderr, "%s: %s\n", label.c_str(), report.messages[0].c_str());
@@ -67,20 +80,17 @@ void set_result_counters(benchmark::State& state, const std::string& label,
   state.counters["holes"] = static_cast<double>(input.holes);
   state.counters["triangles"] = static_cast<double>(triangles);
   state.counters["valid"] = report.valid ? 1 : 0;
+  state.counters["non_delaunay_edges"] = static_cast<double>(report.non_delaunay_edges);
   state.counters["ns_per_vertex"] =
       Counter(n * 1e-9, Counter::kIsIterationInvariantRate | Counter::kInvert);
-  state.counters["peak_bytes_per_vertex"] = static_cast<double>(peak_bytes) / n;
+  state.counters["peak_bytes_per_vertex"] = static_cast<double>(first.peak_bytes) / n;
   state.counters["min_angle_avg_deg"] = quality.min_angle_avg_deg;
   state.counters["dev60_avg_deg"] = quality.dev60_avg_deg;
+  state.counters["threads"] = triangulator.threads;
+  state.counters["oversubscribed"] =
+      triangulator.threads > std::thread::hardware_concurrency() ? 1 : 0;
+  for (const auto& [name, value] : first.statistics) state.counters[name] = value;
 }
-
-/// What the untimed first run found, kept across repetitions of the same benchmark.
-struct FirstRun {
-  std::size_t triangles = 0;
-  std::size_t peak_bytes = 0;
-  double seconds = 0;
-  Triangles result;
-};
 
 double env_seconds(const char* name, double fallback) {
   const char* value = std::getenv(name);
@@ -91,9 +101,7 @@ double env_seconds(const char* name, double fallback) {
 using Durations = std::map<std::string, std::vector<std::pair<double, double>>>;
 
 std::string family_of(const Input& input, const std::string& triangulator) {
-  const std::size_t dash = input.name.rfind('-');
-  if (input.name.find('/') != std::string::npos || dash == std::string::npos) return {};
-  return input.name.substr(0, dash) + "/" + triangulator;
+  return input.family.empty() ? std::string() : input.family + "/" + triangulator;
 }
 
 /// The synthetic sizes of a family run small to large. From the two largest done so far we
@@ -149,13 +157,13 @@ void run(benchmark::State& state, const Input& input, const Triangulator& triang
       first.seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       first.result = prepared->triangles();
+      first.statistics = prepared->statistics();
       if (!family.empty()) durations[family].push_back({vertices, first.seconds});
       found = first_runs.emplace(label, std::move(first)).first;
     }
     std::size_t triangles = 0;
     for (auto _ : state) benchmark::DoNotOptimize(triangles = prepared->triangulate());
-    set_result_counters(state, label, loaded, triangles, found->second.peak_bytes,
-                        found->second.result);
+    set_result_counters(state, label, loaded, triangulator, triangles, found->second);
   } catch (const std::exception& error) {
     state.SkipWithError(error.what());
   }
@@ -174,7 +182,8 @@ int main(int argc, char** argv) {
                                    [input, triangulator](benchmark::State& state) {
                                      bench::run(state, input, triangulator);
                                    })
-          ->Unit(benchmark::kMillisecond);
+          ->Unit(benchmark::kMillisecond)
+          ->UseRealTime();
     }
   }
   benchmark::RunSpecifiedBenchmarks();

@@ -4,6 +4,7 @@
 #include <zlib.h>
 #endif
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -44,12 +45,6 @@ std::string read_text(const fs::path& path) {
   return text;
 }
 
-pear::Polygon load_corpus_file(const fs::path& path) {
-  auto polygons = pear::io::read_geojson(read_text(path), path.string());
-  if (polygons.size() != 1) throw std::runtime_error(path.string() + ": expected one polygon");
-  return std::move(polygons[0]);
-}
-
 std::string size_label(std::size_t n) {
   if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "M";
   return std::to_string(n / 1000) + "k";
@@ -60,7 +55,63 @@ std::size_t env_size(const char* name, std::size_t fallback) {
   return value != nullptr && *value != '\0' ? std::strtoull(value, nullptr, 10) : fallback;
 }
 
-/// The corpus's MANIFEST.tsv: file name and vertex count of each file.
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> parts;
+  std::istringstream in(text);
+  for (std::string part; std::getline(in, part, separator);)
+    if (!part.empty()) parts.push_back(part);
+  return parts;
+}
+
+std::string env_text(const char* name, const char* fallback) {
+  const char* value = std::getenv(name);
+  return value != nullptr && *value != '\0' ? value : fallback;
+}
+
+std::vector<std::size_t> sizes() {
+  std::vector<std::size_t> all;
+  for (const std::string& size :
+       split(env_text("PEAR_BENCH_SIZES", "1000,10000,100000,1000000,4000000"), ','))
+    all.push_back(std::strtoull(size.c_str(), nullptr, 10));
+  return all;
+}
+
+/// Whether the comma-separated list in the environment variable (all when unset) names `name`.
+bool listed(const char* variable, std::string_view name) {
+  const std::string list = env_text(variable, "");
+  if (list.empty()) return true;
+  for (const std::string& item : split(list, ','))
+    if (item == name) return true;
+  return false;
+}
+
+/// The synthetic/ files were made by the same families as pear::generate_polygon.
+std::string family_of_file(const std::string& stem) {
+  return stem.substr(0, stem.find('-'));
+}
+
+bool readable(const std::string& file) {
+#if !PEAR_BENCH_WITH_ZLIB
+  if (file.ends_with(".gz")) {
+    std::fprintf(stderr, "built without zlib: skipping %s\n", file.c_str());
+    return false;
+  }
+#endif
+  return !file.empty();
+}
+
+constexpr const char* default_real_paths =
+    "earcut/rain.json:glyphs/dejavusans_u2741_0.json:countries/united_kingdom_001.json:"
+    "countries/antarctica_000.json";
+
+}  // namespace
+
+pear::Polygon load_polygon_file(const fs::path& path) {
+  auto polygons = pear::io::read_geojson(read_text(path), path.string());
+  if (polygons.size() != 1) throw std::runtime_error(path.string() + ": expected one polygon");
+  return std::move(polygons[0]);
+}
+
 std::vector<std::pair<std::string, std::size_t>> manifest(const fs::path& dir) {
   std::ifstream in(dir / "MANIFEST.tsv");
   std::vector<std::pair<std::string, std::size_t>> files;
@@ -77,22 +128,19 @@ std::vector<std::pair<std::string, std::size_t>> manifest(const fs::path& dir) {
 }
 
 fs::path corpus_dir() {
-  const char* dir = std::getenv("PEAR_BENCH_CORPUS");
-  return dir != nullptr && *dir != '\0' ? fs::path(dir) : fs::path(PEAR_BENCH_DEFAULT_CORPUS);
+  return fs::path(env_text("PEAR_BENCH_CORPUS", PEAR_BENCH_DEFAULT_CORPUS));
 }
-
-}  // namespace
 
 std::vector<Input> inputs() {
   const std::size_t max_vertices = env_size("PEAR_BENCH_MAX_VERTICES", SIZE_MAX);
-  std::vector<std::size_t> sizes = {1000, 10'000, 100'000, 1'000'000};
-  if (env_size("PEAR_BENCH_LARGE", 0) != 0) sizes.push_back(4'000'000);
   std::vector<Input> all;
   for (std::string_view kind : pear::generator_kinds()) {
-    for (std::size_t n : sizes) {
+    if (!listed("PEAR_BENCH_FAMILIES", kind)) continue;
+    for (std::size_t n : sizes()) {
       if (n > max_vertices) continue;
       const std::string k(kind);
-      all.push_back({k + "-" + size_label(n), n, [k, n] { return pear::generate_polygon(k, n); }});
+      all.push_back(
+          {k + "-" + size_label(n), k, n, [k, n] { return pear::generate_polygon(k, n); }});
     }
   }
   const fs::path corpus = corpus_dir();
@@ -101,21 +149,37 @@ std::vector<Input> inputs() {
                  corpus.c_str());
     return all;
   }
-  for (const char* folder : {"synthetic", "coast"}) {
-    for (const auto& [file, vertices] : manifest(corpus / folder)) {
-      if (vertices > max_vertices) continue;
-#if !PEAR_BENCH_WITH_ZLIB
-      if (file.ends_with(".gz")) {
-        std::fprintf(stderr, "built without zlib: skipping %s\n", file.c_str());
-        continue;
-      }
-#endif
-      std::string stem = file.substr(0, file.find('.'));
-      if (std::string_view(folder) == "coast") stem = stem.substr(0, stem.find("_gshhg"));
-      const fs::path path = corpus / folder / file;
-      all.push_back(
-          {std::string(folder) + "/" + stem, vertices, [path] { return load_corpus_file(path); }});
-    }
+  const auto add = [&](const std::string& name, const std::string& family, std::size_t vertices,
+                       const fs::path& path) {
+    if (vertices <= max_vertices)
+      all.push_back({name, family, vertices, [path] { return load_polygon_file(path); }});
+  };
+  for (const auto& [file, vertices] : manifest(corpus / "synthetic")) {
+    const std::string stem = file.substr(0, file.find('.'));
+    if (readable(file))
+      add("synthetic/" + stem, family_of_file(stem), vertices, corpus / "synthetic" / file);
+  }
+  std::vector<std::pair<std::string, std::size_t>> real;
+  for (const std::string& relative : split(env_text("PEAR_BENCH_PATHS", default_real_paths), ':')) {
+    const fs::path path = corpus / relative;
+    std::size_t vertices = 0;
+    for (const auto& [file, n] : manifest(path.parent_path()))
+      if (file == path.filename().string()) vertices = n;
+    if (readable(relative)) real.push_back({relative, vertices});
+  }
+  std::stable_sort(real.begin(), real.end(),
+                   [](const auto& a, const auto& b) { return a.second < b.second; });
+  for (const auto& [relative, vertices] : real) {
+    const fs::path path = corpus / relative;
+    add("real/" + (path.parent_path().filename() / path.stem()).string(), "real", vertices, path);
+  }
+  auto coasts = manifest(corpus / "coast");
+  std::sort(coasts.begin(), coasts.end(),
+            [](const auto& a, const auto& b) { return a.second < b.second; });
+  for (const auto& [file, vertices] : coasts) {
+    const std::string name = file.substr(0, file.find("_gshhg"));
+    if (readable(file) && listed("PEAR_BENCH_COASTS", name))
+      add("coast/" + name, "coast", vertices, corpus / "coast" / file);
   }
   return all;
 }

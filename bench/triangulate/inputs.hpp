@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -11,15 +12,26 @@
 namespace bench {
 
 struct Input {
-  std::string name;      ///< "koch-100k", "coast/eurasia", ...
+  std::string name;      ///< "koch-100k", "coast/eurasia", "real/countries/russia_000", ...
+  std::string family;    ///< "koch", "coast", ...: sizes of one family grow alike (too_slow)
   std::size_t vertices;  ///< about how many, to choose before loading
   std::function<pear::Polygon()> load;
 };
 
-/// Families at 1k, 10k, 100k and 1M vertices (4M too when PEAR_BENCH_LARGE=1), then the
-/// corpus's synthetic/ and coast/ files when the corpus directory exists (PEAR_BENCH_CORPUS,
-/// else the build's default); inputs above PEAR_BENCH_MAX_VERTICES are left out. Messages
-/// about what is left out go to stderr.
+/// In this order: the generator families (PEAR_BENCH_FAMILIES, comma-separated, default all)
+/// at PEAR_BENCH_SIZES (default 1000,10000,100000,1000000,4000000); the corpus's synthetic/
+/// files; the real polygons of PEAR_BENCH_PATHS (colon-separated, relative to the corpus,
+/// default the largest of earcut/, glyphs/, countries/), small to large; the coast/ files
+/// (PEAR_BENCH_COASTS, comma-separated names such as "eurasia", default all), small to large.
+/// The corpus is PEAR_BENCH_CORPUS, else the build's default; inputs above
+/// PEAR_BENCH_MAX_VERTICES are left out. Messages about what is left out go to stderr.
 std::vector<Input> inputs();
+
+/// The corpus directory (PEAR_BENCH_CORPUS, else the build's default).
+std::filesystem::path corpus_dir();
+/// One polygon from a GeoJSON file (.json, or .json.gz when built with zlib).
+pear::Polygon load_polygon_file(const std::filesystem::path& path);
+/// The corpus folder's MANIFEST.tsv: file name and vertex count of each file.
+std::vector<std::pair<std::string, std::size_t>> manifest(const std::filesystem::path& dir);
 
 }  // namespace bench

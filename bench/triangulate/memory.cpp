@@ -1,5 +1,7 @@
-// Replaces the global operator new and delete (all of them in this process, the peers'
-// libraries included). Counting is off except around one untimed run per benchmark, so the
+// Replaces malloc, free and their relatives for the whole process (glibc allows a program to do
+// so; see the glibc manual, "Replacing malloc"), passing every call on to glibc's own allocator.
+// So the heap of every triangulator is counted, C libraries (GLU) and C++ ones (operator new
+// calls malloc) alike. Counting is off except around one untimed run per benchmark, so the
 // timed runs pay only a relaxed load. Blocks freed while counting that were allocated before
 // only lower the live count: the peak of a run that starts from scratch is exact.
 #include "memory.hpp"
@@ -7,8 +9,16 @@
 #include <malloc.h>
 
 #include <atomic>
-#include <cstdlib>
-#include <new>
+#include <cerrno>
+#include <cstddef>
+
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* p, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+void __libc_free(void* p);
+}
 
 namespace bench {
 namespace {
@@ -17,25 +27,20 @@ std::atomic<bool> counting{false};
 std::atomic<long long> live{0};
 std::atomic<long long> peak{0};
 
-void* allocate(std::size_t size) {
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (p == nullptr) throw std::bad_alloc();
-  if (counting.load(std::memory_order_relaxed)) {
-    const long long now =
-        live.fetch_add(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed) +
-        static_cast<long long>(malloc_usable_size(p));
-    long long seen = peak.load(std::memory_order_relaxed);
-    while (now > seen && !peak.compare_exchange_weak(seen, now, std::memory_order_relaxed)) {
-    }
+void add_live(long long bytes) {
+  const long long now = live.fetch_add(bytes, std::memory_order_relaxed) + bytes;
+  long long seen = peak.load(std::memory_order_relaxed);
+  while (now > seen && !peak.compare_exchange_weak(seen, now, std::memory_order_relaxed)) {
   }
-  return p;
 }
 
-void release(void* p) noexcept {
-  if (p == nullptr) return;
-  if (counting.load(std::memory_order_relaxed))
-    live.fetch_sub(static_cast<long long>(malloc_usable_size(p)), std::memory_order_relaxed);
-  std::free(p);
+long long usable(void* p) {
+  return p == nullptr ? 0 : static_cast<long long>(malloc_usable_size(p));
+}
+
+void* counted(void* p) {
+  if (p != nullptr && counting.load(std::memory_order_relaxed)) add_live(usable(p));
+  return p;
 }
 
 }  // namespace
@@ -53,41 +58,45 @@ std::size_t stop_counting_memory() {
 
 }  // namespace bench
 
-void* operator new(std::size_t size) {
-  return bench::allocate(size);
+extern "C" {
+
+void* malloc(std::size_t size) {
+  return bench::counted(__libc_malloc(size));
 }
-void* operator new[](std::size_t size) {
-  return bench::allocate(size);
+
+void* calloc(std::size_t count, std::size_t size) {
+  return bench::counted(__libc_calloc(count, size));
 }
-void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return bench::allocate(size);
-  } catch (...) {
-    return nullptr;
-  }
+
+void free(void* p) {
+  if (p != nullptr && bench::counting.load(std::memory_order_relaxed))
+    bench::live.fetch_sub(bench::usable(p), std::memory_order_relaxed);
+  __libc_free(p);
 }
-void* operator new[](std::size_t size, const std::nothrow_t&) noexcept {
-  try {
-    return bench::allocate(size);
-  } catch (...) {
-    return nullptr;
-  }
+
+void* realloc(void* p, std::size_t size) {
+  const bool counting = bench::counting.load(std::memory_order_relaxed);
+  const long long before = counting ? bench::usable(p) : 0;
+  void* q = __libc_realloc(p, size);
+  // Null with size > 0: the old block is untouched. Null with size 0: it was freed.
+  if (counting && (q != nullptr || size == 0)) bench::add_live(bench::usable(q) - before);
+  return q;
 }
-void operator delete(void* p) noexcept {
-  bench::release(p);
+
+void* memalign(std::size_t alignment, std::size_t size) {
+  return bench::counted(__libc_memalign(alignment, size));
 }
-void operator delete[](void* p) noexcept {
-  bench::release(p);
+
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  return bench::counted(__libc_memalign(alignment, size));
 }
-void operator delete(void* p, std::size_t) noexcept {
-  bench::release(p);
+
+int posix_memalign(void** out, std::size_t alignment, std::size_t size) {
+  if (alignment % sizeof(void*) != 0 || (alignment & (alignment - 1)) != 0) return EINVAL;
+  void* p = bench::counted(__libc_memalign(alignment, size));
+  if (p == nullptr) return ENOMEM;
+  *out = p;
+  return 0;
 }
-void operator delete[](void* p, std::size_t) noexcept {
-  bench::release(p);
-}
-void operator delete(void* p, const std::nothrow_t&) noexcept {
-  bench::release(p);
-}
-void operator delete[](void* p, const std::nothrow_t&) noexcept {
-  bench::release(p);
-}
+
+}  // extern "C"

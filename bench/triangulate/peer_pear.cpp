@@ -1,18 +1,31 @@
-// pear's sequential ear clipper as a benchmark entry, and the shared point index.
+// pear's algorithms as benchmark entries (sequential, CDT, the parallel variants at several
+// thread counts), the list of all triangulators, and the shared point index.
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 #include "pear/pear.hpp"
 #include "pear/predicates.hpp"
+#include "pear/scheduler.hpp"
 #include "peers.hpp"
 
 namespace bench {
 namespace {
 
+/// One executor per thread count, made once: a user running many triangulations would share one
+/// too, so thread start-up is not part of the time. threads = 1 needs none.
+pear::Executor* executor_for(unsigned threads) {
+  static std::map<unsigned, std::unique_ptr<pear::Executor>> executors;
+  if (threads <= 1) return nullptr;
+  auto& executor = executors[threads];
+  if (!executor) executor = std::make_unique<pear::Executor>(threads);
+  return executor.get();
+}
+
 class PearPolygon final : public PreparedPolygon {
  public:
-  PearPolygon(const pear::Polygon& polygon, pear::EarHeuristic heuristic)
-      : polygon_(polygon), options_{.heuristic = heuristic} {}
+  PearPolygon(const pear::Polygon& polygon, const pear::Options& options)
+      : polygon_(polygon), options_(options) {}
 
   std::size_t triangulate() override {
     result_ = pear::triangulate(polygon_, options_);
@@ -21,6 +34,14 @@ class PearPolygon final : public PreparedPolygon {
     return result_.triangles.size();
   }
   Triangles triangles() const override { return result_.triangles; }
+  std::map<std::string, double> statistics() const override {
+    if (!options_.delaunay) return {};
+    const pear::DelaunayStatistics& d = result_.delaunay;
+    return {{"cdt_edges", static_cast<double>(d.edges)},
+            {"cdt_flips", static_cast<double>(d.flips)},
+            {"cdt_flips_in_partitions", static_cast<double>(d.flips_in_partitions)},
+            {"cdt_flips_on_borders", static_cast<double>(d.flips_on_borders)}};
+  }
 
  private:
   const pear::Polygon& polygon_;
@@ -28,18 +49,44 @@ class PearPolygon final : public PreparedPolygon {
   pear::Triangulation<std::uint32_t> result_;
 };
 
+Triangulator pear_entry(std::string name, pear::Options options) {
+  const unsigned threads = std::max(1u, options.threads);
+  if (options.algorithm != pear::Algorithm::sequential) options.executor = executor_for(threads);
+  return {std::move(name),
+          [options](const pear::Polygon& polygon) {
+            return std::make_unique<PearPolygon>(polygon, options);
+          },
+          options.algorithm == pear::Algorithm::sequential ? 1u : threads};
+}
+
 }  // namespace
 
-std::unique_ptr<PreparedPolygon> prepare_pear_fast(const pear::Polygon& polygon) {
-  return std::make_unique<PearPolygon>(polygon, pear::EarHeuristic::fast);
-}
-std::unique_ptr<PreparedPolygon> prepare_pear_top(const pear::Polygon& polygon) {
-  return std::make_unique<PearPolygon>(polygon, pear::EarHeuristic::top);
+std::vector<Triangulator> pear_triangulators() {
+  using pear::Algorithm;
+  using pear::EarHeuristic;
+  std::vector<Triangulator> all = {
+      pear_entry("pear_top", {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::top}),
+      pear_entry("pear_fast",
+                 {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::fast}),
+      pear_entry("pear_cdt", {.algorithm = Algorithm::sequential, .delaunay = true}),
+  };
+  const std::pair<const char*, Algorithm> variants[] = {{"pc", Algorithm::partition_and_cut},
+                                                        {"mc", Algorithm::mark_and_cut},
+                                                        {"dc", Algorithm::divide_and_conquer},
+                                                        {"auto", Algorithm::automatic}};
+  for (const bool delaunay : {false, true})
+    for (const auto& [short_name, algorithm] : variants)
+      for (const unsigned threads : {1u, 2u, 4u, 8u}) {
+        std::string name = "pear_" + std::string(short_name) + "_t" + std::to_string(threads);
+        if (delaunay) name += "_cdt";
+        all.push_back(
+            pear_entry(name, {.algorithm = algorithm, .delaunay = delaunay, .threads = threads}));
+      }
+  return all;
 }
 
 std::vector<Triangulator> triangulators() {
-  std::vector<Triangulator> all = {{"pear_fast", prepare_pear_fast},
-                                   {"pear_top", prepare_pear_top}};
+  std::vector<Triangulator> all = pear_triangulators();
 #ifdef PEAR_BENCH_WITH_CGAL
   all.push_back({"cgal_cdt", prepare_cgal_cdt});
 #endif
@@ -48,6 +95,9 @@ std::vector<Triangulator> triangulators() {
     all.push_back({"geos_ear", prepare_geos_ear});
     all.push_back({"geos_cdt", prepare_geos_cdt});
   }
+#endif
+#ifdef PEAR_BENCH_WITH_GLU
+  all.push_back({"glu", prepare_glu});
 #endif
   return all;
 }

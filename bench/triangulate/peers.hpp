@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,20 +25,24 @@ class PreparedPolygon {
   /// The last result as counterclockwise index triples into the polygon's points numbered ring
   /// after ring (not timed).
   virtual Triangles triangles() const = 0;
+  /// Extra numbers about the last run, reported as benchmark counters (pear: CDT flips).
+  virtual std::map<std::string, double> statistics() const { return {}; }
 };
 
 struct Triangulator {
+  /// pear_top, pear_fast, pear_cdt (sequential, top heuristic, then flips), pear_ALG_tN[_cdt]
+  /// (ALG = pc, mc, dc, auto; N threads and partitions), cgal_cdt, geos_ear, geos_cdt, glu.
   std::string name;
   /// Converts the polygon to the triangulator's input form (not timed). The polygon outlives it.
-  std::unique_ptr<PreparedPolygon> (*prepare)(const pear::Polygon& polygon);
+  std::function<std::unique_ptr<PreparedPolygon>(const pear::Polygon&)> prepare;
+  unsigned threads = 1;  ///< threads the triangulator runs on (the peers: 1)
 };
 
-/// pear's sequential engine with the "fast" and the "top" ear heuristics, then the peers
+/// pear's sequential engine, CDT and parallel variants at 1, 2, 4 and 8 threads, then the peers
 /// compiled in and available at run time.
 std::vector<Triangulator> triangulators();
 
-std::unique_ptr<PreparedPolygon> prepare_pear_fast(const pear::Polygon& polygon);
-std::unique_ptr<PreparedPolygon> prepare_pear_top(const pear::Polygon& polygon);
+std::vector<Triangulator> pear_triangulators();
 #ifdef PEAR_BENCH_WITH_CGAL
 std::unique_ptr<PreparedPolygon> prepare_cgal_cdt(const pear::Polygon& polygon);
 #endif
@@ -45,6 +51,9 @@ std::unique_ptr<PreparedPolygon> prepare_cgal_cdt(const pear::Polygon& polygon);
 bool geos_available(std::string& why_not);
 std::unique_ptr<PreparedPolygon> prepare_geos_ear(const pear::Polygon& polygon);
 std::unique_ptr<PreparedPolygon> prepare_geos_cdt(const pear::Polygon& polygon);
+#endif
+#ifdef PEAR_BENCH_WITH_GLU
+std::unique_ptr<PreparedPolygon> prepare_glu(const pear::Polygon& polygon);
 #endif
 
 /// Maps triangles given by coordinates back to the polygon's point numbering (ring after ring),

@@ -2,7 +2,9 @@
 """Markdown tables from a bench_triangulate JSON file: median CPU time per input and
 triangulator with the ratio peer time / pear time (same run), then quality and memory.
 
-    python3 bench/triangulate/table.py docs/results/DATE-triangulate-quick.json [--reference pear_fast]
+    python3 bench/triangulate/table.py docs/results/FILE.json [--reference pear_fast]
+
+For older results files; bench/run.sh and bench/report/ make docs/benchmarks.md.
 """
 import argparse
 import json
@@ -15,7 +17,7 @@ def load(path):
     rows = {}  # input -> triangulator -> median entry or error text
     order = []
     for b in data["benchmarks"]:
-        name = b.get("run_name", b["name"])
+        name = b.get("run_name", b["name"]).removesuffix("/real_time")
         parts = name.split("/")
         if len(parts) < 3:
             continue

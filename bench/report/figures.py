@@ -1,0 +1,160 @@
+"""The paper's figures from one run: Fig. 7 (ears), Fig. 8 (time per vertex), Fig. 9 (speedup,
+measured and projected from work/span), and peak memory per vertex. Each as SVG and PNG."""
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+from results import PEERS, VARIANT_NAMES, median  # noqa: E402
+
+STYLE = {
+    "pear_top": ("tab:blue", "o", "pear sequential (top)"),
+    "pear_fast": ("tab:cyan", "o", "pear sequential (fast)"),
+    "pear_cdt": ("tab:purple", "s", "pear CDT sequential"),
+    "pear_mc_t2": ("tab:green", "^", "pear mark-and-cut, 2 threads"),
+    "pear_pc_t2": ("tab:olive", "v", "pear partition-and-cut, 2 threads"),
+    "pear_pc_t2_cdt": ("tab:pink", "D", "pear partition-and-cut + CDT, 2 threads"),
+    "cgal_cdt": ("tab:red", "x", "CGAL CDT"),
+    "geos_ear": ("tab:brown", "+", "GEOS PolygonTriangulator"),
+    "geos_cdt": ("tab:orange", "*", "GEOS ConstrainedDelaunayTriangulator"),
+    "glu": ("tab:gray", "1", "GLU tessellator"),
+}
+
+
+def save(fig, docs, name):
+    out = os.path.join(docs, "figures")
+    os.makedirs(out, exist_ok=True)
+    for ext in ("svg", "png"):
+        fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=110, bbox_inches="tight")
+    plt.close(fig)
+    return f"figures/{name}.svg"
+
+
+def fig7_ears(ears, docs):
+    if not ears:
+        return None
+    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4))
+    folders = sorted({e["folder"] for e in ears})
+    for folder in folders:
+        rows = [e for e in ears if e["folder"] == folder and e["vertices"] > 0]
+        n = [e["vertices"] for e in rows]
+        left.scatter(n, [e["ears"] / e["vertices"] for e in rows], s=6, label=folder, alpha=0.6)
+    left.set_xscale("log")
+    left.set_ylim(0, 1)
+    left.set_xlabel("vertices (after cleaning and bridging)")
+    left.set_ylabel("fraction of vertices that are ears")
+    left.axhline(0.5, color="k", lw=0.5, ls=":")
+    left.legend(fontsize=7, markerscale=2)
+    fractions = [e["ears"] / e["vertices"] for e in ears if e["vertices"] > 0]
+    convex = [e["convex"] / e["vertices"] for e in ears if e["vertices"] > 0]
+    bins = [i / 40 for i in range(41)]
+    right.hist(fractions, bins=bins, alpha=0.7, label="ears")
+    right.hist(convex, bins=bins, alpha=0.5, label="convex vertices")
+    right.set_xlabel("fraction of a polygon's vertices")
+    right.set_ylabel("polygons")
+    right.legend(fontsize=8)
+    fig.suptitle(f"Fig. 7: ear prevalence over {len(fractions)} polygons")
+    return save(fig, docs, "fig7-ears")
+
+
+def fig8_time_per_vertex(timings, docs):
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    for tri, (color, marker, label) in STYLE.items():
+        points = []
+        for inp in timings.inputs:
+            e = timings.get(inp, tri)
+            if e:
+                points.append((e["vertices"], e["ms"] * 1e6 / e["vertices"]))
+        if points:
+            points.sort()
+            ax.scatter(*zip(*points), color=color, marker=marker, s=22, label=label)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlabel("vertices")
+    ax.set_ylabel("wall-clock time per vertex (ns)")
+    ax.grid(True, which="both", lw=0.3)
+    ax.legend(fontsize=7, ncol=2)
+    ax.set_title("Fig. 8: time per vertex (all inputs of the run; valid results only)")
+    return save(fig, docs, "fig8-time-per-vertex")
+
+
+def measured_speedups(timings, variant, threads, cdt):
+    base = "pear_cdt" if cdt else "pear_top"
+    tri = f"pear_{variant}_t{threads}" + ("_cdt" if cdt else "")
+    points = []
+    for inp in timings.inputs:
+        b, t = timings.ms(inp, base), timings.ms(inp, tri)
+        if b and t:
+            points.append((timings.vertices(inp)[0], b / t))
+    return sorted(points)
+
+
+def projected_speedups(profile, variant, threads):
+    points = []
+    for run in profile:
+        base = run["sequential_cdt"] if variant.endswith("_cdt") else run["sequential"]
+        for v in run["variants"]:
+            if v["variant"] == variant and v["partitions"] == threads:
+                points.append((run["vertices"], base / v["projected"][str(threads)]))
+    return sorted(points)
+
+
+def fig9_speedup(timings, profile, docs):
+    panels = [("dc", False), ("pc", False), ("mc", False), ("pc", True)]
+    fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharey=True)
+    colors = {1: "tab:gray", 2: "tab:blue", 4: "tab:green", 8: "tab:red", 16: "tab:purple"}
+    for ax, (variant, cdt) in zip(axes.flat, panels):
+        for t in (1, 2, 4, 8):
+            points = measured_speedups(timings, variant, t, cdt)
+            if points:
+                over = " (oversubscribed)" if t > 2 else ""
+                ax.scatter(*zip(*points), s=22, label=f"{t} thread{'s' if t > 1 else ''}, measured{over}",
+                           facecolors="none" if t > 2 else colors[t], edgecolors=colors[t])
+        key = variant + ("_cdt" if cdt else "")
+        for t in (2, 4, 8, 16):
+            points = projected_speedups(profile, key, t)
+            if points:
+                ax.scatter(*zip(*points), color=colors[t], marker="x", s=14, lw=0.8,
+                           label=f"{t} threads, work/span projection")
+        ax.axhline(1, color="k", lw=0.5)
+        ax.set_xscale("log")
+        ax.set_xlabel("vertices")
+        title = VARIANT_NAMES[variant] + (" + parallel CDT (vs sequential CDT)" if cdt else "")
+        ax.set_title(title, fontsize=10)
+        ax.grid(True, which="both", lw=0.3)
+        ax.legend(fontsize=6)
+    axes[0][0].set_ylabel("speedup over pear's sequential engine")
+    axes[1][0].set_ylabel("speedup over pear's sequential engine")
+    fig.suptitle("Fig. 9: speedup against input size per thread count")
+    fig.tight_layout()
+    return save(fig, docs, "fig9-speedup")
+
+
+def fig_memory(timings, docs):
+    names, values = [], []
+    for tri in timings.triangulators():
+        per_vertex = [timings.get(inp, tri)["peak_bytes_per_vertex"] for inp in timings.inputs
+                      if timings.get(inp, tri) and timings.vertices(inp)[0] >= 10000]
+        if per_vertex and (tri in PEERS or tri in STYLE):
+            names.append(tri)
+            values.append(median(per_vertex))
+    if not names:
+        return None
+    fig, ax = plt.subplots(figsize=(9, 4))
+    ax.bar(names, values, color=[STYLE.get(n, ("tab:gray",))[0] for n in names])
+    ax.set_ylabel("peak heap bytes per vertex (median, inputs >= 10k)")
+    ax.tick_params(axis="x", labelrotation=45, labelsize=8)
+    ax.set_title("Peak heap memory per vertex")
+    return save(fig, docs, "memory-per-vertex")
+
+
+def render(run, docs):
+    timings = run["timings"]
+    return {
+        "fig7": fig7_ears(run["ears"], docs),
+        "fig8": fig8_time_per_vertex(timings, docs),
+        "fig9": fig9_speedup(timings, run["profile"], docs),
+        "memory": fig_memory(timings, docs),
+    }

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# One command for every benchmark and experiment of issue 8: builds, runs the timing suite
+# (bench_triangulate: pear's algorithms x threads x CDT against CGAL, GEOS, GLU) and the paper's
+# other experiments (paper_experiments: ears, work/span profile, quality, flips), writes
+# docs/results/DATE-MODE-*.json with the machine described, renders docs/figures/*.svg|png and
+# writes docs/benchmarks.md.
+#
+#   bench/run.sh [quick|full] [--build DIR] [--commit REV] [--report-only]
+#
+# quick: a few minutes; a subset of sizes and variants, one repetition, still the largest
+#        coastline (Eurasia, 1.5M vertices) for the headline ratios.
+# full:  every family at 1k..4M, every real input, threads 1, 2, 4, 8, three repetitions (hours).
+# --commit REV: measure that commit, exported with `git archive` into DIR/snapshot (a shared
+#        working tree with other people's unfinished edits need not compile); default: the
+#        working tree as it is.
+# --report-only: skip building and running; re-render from the JSON of today's MODE run.
+# Needs: Meson, Ninja, Google Benchmark; peers and zlib when found; python3-matplotlib.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+mode=quick
+build=build-bench
+commit=""
+report_only=0
+while [[ $# -gt 0 ]]; do
+  case $1 in
+    quick | full) mode=$1 ;;
+    --build) build=$2; shift ;;
+    --commit) commit=$2; shift ;;
+    --report-only) report_only=1 ;;
+    *) echo "usage: $0 [quick|full] [--build DIR] [--commit REV] [--report-only]" >&2; exit 2 ;;
+  esac
+  shift
+done
+[[ $build = /* ]] || build="$root/$build"
+results="$root/docs/results"
+stem="$results/$(date -u +%Y-%m-%d)-$mode"
+mkdir -p "$results"
+export PEAR_BENCH_CORPUS=${PEAR_BENCH_CORPUS:-$root/../shared/corpus}
+# Debian's matplotlib lives in the system Python, which a pyenv or venv python3 may hide.
+python=${PYTHON:-python3}
+"$python" -c 'import matplotlib' 2>/dev/null || python=/usr/bin/python3
+
+# Source to build: the working tree, or a snapshot of one commit (files copied only when they
+# changed, so the snapshot's build stays incremental).
+source_dir=$root
+if [[ -n $commit ]]; then
+  source_dir="$build/snapshot/src"
+  export_dir="$build/snapshot/export"
+  rm -rf "$export_dir" && mkdir -p "$export_dir" "$source_dir"
+  git -C "$root" archive "$commit" | tar -x -C "$export_dir"
+  rsync -rc --delete "$export_dir/" "$source_dir/"
+  build="$build/snapshot/build"
+fi
+described_commit=$(git -C "$root" rev-parse --short "${commit:-HEAD}")
+[[ -z $commit && -n $(git -C "$root" status --porcelain -- src include) ]] &&
+  described_commit="$described_commit+uncommitted"
+
+if [[ $report_only -eq 0 ]]; then
+  [[ -f $build/build.ninja ]] ||
+    meson setup "$build" "$source_dir" --buildtype=release -Dbench=enabled -Dtests=disabled \
+      -Dcli=disabled -Dfuzz=disabled
+  ninja -C "$build" -j2 bench/triangulate/bench_triangulate bench/paper/paper_experiments
+
+  # What each mode runs. The regular expression picks triangulators (bench_triangulate's
+  # benchmarks are named triangulate/INPUT/TRIANGULATOR).
+  peers='cgal_cdt|geos_ear|geos_cdt|glu'
+  if [[ $mode = quick ]]; then
+    export PEAR_BENCH_FAMILIES=${PEAR_BENCH_FAMILIES:-koch,spiral,random,holes}
+    export PEAR_BENCH_SIZES=${PEAR_BENCH_SIZES:-10000,100000}
+    export PEAR_BENCH_COASTS=${PEAR_BENCH_COASTS:-borneo,australia,eurasia}
+    export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-8}
+    filter="triangulate/.*/(pear_(top|fast|cdt)|pear_(pc|mc|dc)_t[12]|pear_pc_t2_cdt|$peers)/real_time$"
+    bench_flags=(--benchmark_repetitions=1 --benchmark_min_time=0.05)
+    quality_max=20000
+    profile_max=250000
+  else
+    export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-30}
+    filter="triangulate/.*"
+    bench_flags=(--benchmark_repetitions=3 --benchmark_min_time=0.2
+      --benchmark_report_aggregates_only=true)
+    quality_max=2000000
+    profile_max=2000000
+  fi
+
+  "$python" "$root/bench/report/machine.py" "$mode" "$described_commit" > "$stem-machine.json"
+  "$build/bench/triangulate/bench_triangulate" --benchmark_filter="$filter" "${bench_flags[@]}" \
+    --benchmark_out_format=json --benchmark_out="$stem-triangulate.json"
+  experiments="$build/bench/paper/paper_experiments"
+  "$experiments" ears > "$stem-ears.json"
+  "$experiments" quality "$quality_max" > "$stem-quality.json"
+  "$experiments" profile "$profile_max" > "$stem-profile.json"
+  "$python" "$root/bench/report/machine.py" --finish "$stem-machine.json"
+fi
+
+"$python" "$root/bench/report/report.py" "$stem" --docs "$root/docs"
+echo "wrote $stem-*.json, $root/docs/figures/ and $root/docs/benchmarks.md"
