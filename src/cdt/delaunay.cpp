@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "borders.hpp"
 #include "mesh.hpp"
 #include "partition.hpp"
 
@@ -30,40 +31,6 @@ void push_interior_edges(const Mesh& mesh, std::vector<std::uint32_t>& stack,
     stack.push_back(h);
     queued[h] = 1;
   }
-}
-
-/// The half-edges of set s whose twin lies in another set: they were not flipped by the task
-/// and their twins may be stale.
-void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::uint32_t s,
-                     std::vector<std::uint32_t>& borders) {
-  for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
-    const std::uint32_t t = partition.order[i];
-    for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h)
-      if (mesh.twin[h] != no_twin && partition.part[mesh.twin[h] / 3] != s) borders.push_back(h);
-  }
-}
-
-/// Pairs the border half-edges again by their endpoints' positions: the sets' flips moved them to
-/// other slots without telling the other side. Returns one half-edge of each pair, sorted.
-std::vector<std::uint32_t> relink_borders(Mesh& mesh,
-                                          const std::vector<std::vector<std::uint32_t>>& sets) {
-  std::vector<std::uint32_t> all;
-  for (const auto& borders : sets) all.insert(all.end(), borders.begin(), borders.end());
-  // By position, not caller index: see pair_by_position in mesh.cpp.
-  const auto ends = [&](std::uint32_t h) {
-    return EdgeEnds(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
-  };
-  std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
-    const EdgeEnds e = ends(h), f = ends(g);
-    return e != f ? e < f : h < g;
-  });
-  std::vector<std::uint32_t> first_of_pair;
-  for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
-    mesh.twin[all[i]] = all[i + 1];
-    mesh.twin[all[i + 1]] = all[i];
-    first_of_pair.push_back(all[i]);
-  }
-  return first_of_pair;
 }
 
 void flip_sequentially(Mesh& mesh, std::size_t budget, const ParallelContext& ctx,
@@ -99,11 +66,9 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const Para
     collect_borders(mesh, partition, static_cast<std::uint32_t>(s), borders[s]);
   });
   for (std::size_t f : flips) stats.flips_in_partitions += f;
-  ctx.run_serial("cdt flip borders", [&] {
-    std::vector<std::uint32_t> stack = relink_borders(mesh, borders);
-    for (std::uint32_t h : stack) queued[h] = 1;
-    stats.flips_on_borders = flip_until_delaunay(mesh, stack, queued, FlipScope{}, budget);
-  });
+  std::vector<std::uint32_t> suspects;
+  ctx.run_serial("cdt relink borders", [&] { suspects = relink_borders(mesh, borders); });
+  stats.flips_on_borders = flip_borders(mesh, std::move(suspects), ctx, budget);
   stats.flips = stats.flips_in_partitions + stats.flips_on_borders;
 }
 

@@ -111,6 +111,25 @@ TEST_P(Corpus, DelaunayAndEqualToCgal) {
   for (const Polygon& polygon : polygons) check_polygon(polygon, file);
 }
 
+// Regression: at touching rings the two triangles of a diagonal used different caller indices of
+// one point; matched by index only, the diagonal counted as a constraint (not Delaunay), and
+// the partitioned flips' relinking paired wrong border edges (overlapping triangles).
+TEST(CorpusRegression, DiagonalAtTouchingRingsHasTwoIndices) {
+  for (const CorpusFile& file : corpus_files({"earcut"})) {
+    if (!file.name.ends_with("rain.json") && !file.name.ends_with("hole-touching-outer.json") &&
+        !file.name.ends_with("issue119.json") && !file.name.ends_with("self-tangent-4.json"))
+      continue;
+    SCOPED_TRACE(file.name);
+    for (const Polygon& polygon : io::read_text(read_all(file.path), io::Format::geojson, file.name,
+                                                {.keep_small_rings = true}))
+      for (unsigned partitions : {1u, 2u}) {
+        const auto result = constrained_delaunay(polygon, Algorithm::sequential, 1, partitions);
+        ASSERT_EQ(result.status, Status::ok);
+        expect_delaunay(polygon, result.triangles);
+      }
+  }
+}
+
 std::string test_name(const ::testing::TestParamInfo<CorpusFile>& info) {
   std::string name = info.param.name;
   for (char& c : name)

@@ -80,6 +80,33 @@ TEST(Cdt, StatisticsAddUp) {
   EXPECT_GT(one.delaunay.flips, 0u);
 }
 
+// Random holes give many border flips: the fix-up runs rounds of parallel flips there.
+TEST(Cdt, BorderRoundsRunInParallelAndGiveTheSameCdt) {
+  const Polygon polygon = generate_polygon("random-holes", 20000, 5);
+  Triangles first;
+  for (unsigned threads : {1u, 2u, 4u}) {
+    RunProfile profile;
+    Options options{.delaunay = true,
+                    .threads = threads,
+                    .partitions = 4,
+                    .executor = executor_for(threads),
+                    .profile = &profile};
+    const auto result = triangulate(polygon, options);
+    ASSERT_EQ(result.status, Status::ok);
+    const bool rounds =
+        std::any_of(profile.phases.begin(), profile.phases.end(),
+                    [](const auto& p) { return p.name == "cdt border round: flip"; });
+    EXPECT_TRUE(rounds) << "no round was large enough to run in parallel";
+    EXPECT_GT(result.delaunay.flips_on_borders, 1000u);
+    if (threads == 1) {
+      first = result.triangles;
+      expect_delaunay(polygon, result.triangles);
+      expect_equal_to_cgal(polygon, result.triangles);
+    }
+    EXPECT_EQ(result.triangles, first) << threads << " threads";
+  }
+}
+
 TEST(Cdt, WithoutDelaunayNoStatistics) {
   const auto result = triangulate(generate_polygon("star", 500, 3));
   EXPECT_EQ(result.delaunay.flips, 0u);

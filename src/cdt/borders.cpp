@@ -1,0 +1,159 @@
+#include "borders.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+namespace pear::detail {
+namespace {
+
+/// Below this many suspects a round's tasks cost more than they save: it runs on this thread.
+constexpr std::size_t min_round_suspects = 512;
+/// Suspects per task in a round.
+constexpr std::size_t round_chunk = 256;
+
+/// Which triangles this round's picked flips use (own) or update a twin in (touched).
+struct RoundMarks {
+  std::vector<std::uint32_t> own, touched, listed;  ///< round numbers; listed: per half-edge
+  std::uint32_t round = 0;
+  std::vector<std::uint8_t> needs;             ///< per suspect: must be flipped
+  std::vector<std::uint32_t> picked, waiting;  ///< flipped this round, and left for the next
+};
+
+std::uint32_t outer_neighbour(const Mesh& mesh, std::uint32_t h) {
+  const std::uint32_t twin = mesh.twin[h];
+  return twin == no_twin ? no_twin : twin / 3;
+}
+
+/// A flip of h writes its two triangles and one twin in each of the up to four neighbours. It
+/// may run beside the flips picked before it when no triangle it writes is one they own, and no
+/// triangle it owns is one they write.
+bool pick(const Mesh& mesh, std::uint32_t h, RoundMarks& marks) {
+  const std::uint32_t g = mesh.twin[h];
+  const std::uint32_t own[2] = {h / 3, g / 3};
+  const std::uint32_t outer[4] = {outer_neighbour(mesh, next_half_edge(h)),
+                                  outer_neighbour(mesh, next_half_edge(next_half_edge(h))),
+                                  outer_neighbour(mesh, next_half_edge(g)),
+                                  outer_neighbour(mesh, next_half_edge(next_half_edge(g)))};
+  for (std::uint32_t t : own)
+    if (marks.own[t] == marks.round || marks.touched[t] == marks.round) return false;
+  for (std::uint32_t t : outer)
+    if (t != no_twin && marks.own[t] == marks.round) return false;
+  for (std::uint32_t t : own) marks.own[t] = marks.round;
+  for (std::uint32_t t : outer)
+    if (t != no_twin) marks.touched[t] = marks.round;
+  return true;
+}
+
+/// Appends the edge of h to `list` unless already listed this round.
+void list_once(const Mesh& mesh, std::uint32_t h, RoundMarks& marks,
+               std::vector<std::uint32_t>& list) {
+  const std::uint32_t g = mesh.twin[h];
+  if (g == no_twin) return;
+  const std::uint32_t first = std::min(h, g);
+  if (marks.listed[first] == marks.round) return;
+  marks.listed[first] = marks.round;
+  list.push_back(h);
+}
+
+/// Runs body(begin, end) over [0, count) in chunks: as parallel tasks when the round is large,
+/// else right here (the result is the same either way).
+template <class Body>
+void for_chunks(const ParallelContext& ctx, bool parallel, const char* phase, std::size_t count,
+                Body&& body) {
+  if (!parallel) return body(std::size_t{0}, count);
+  ctx.run_tasks(phase, (count + round_chunk - 1) / round_chunk, [&](std::size_t c) {
+    body(c * round_chunk, std::min(count, (c + 1) * round_chunk));
+  });
+}
+
+/// One round; returns the flips done (at most `budget`) and leaves the next suspects in
+/// `suspects`.
+std::size_t flip_round(Mesh& mesh, std::vector<std::uint32_t>& suspects, RoundMarks& marks,
+                       const ParallelContext& ctx, std::size_t budget) {
+  const bool parallel = suspects.size() >= min_round_suspects;
+  std::vector<std::uint8_t>& needs = marks.needs;
+  needs.assign(suspects.size(), 0);
+  for_chunks(ctx, parallel, "cdt border round: test", suspects.size(),
+             [&](std::size_t begin, std::size_t end) {
+               for (std::size_t i = begin; i < end; ++i)
+                 needs[i] = mesh.twin[suspects[i]] != no_twin && must_flip(mesh, suspects[i]);
+             });
+  ++marks.round;
+  std::vector<std::uint32_t>&picked = marks.picked, &waiting = marks.waiting;
+  picked.clear();
+  waiting.clear();
+  for (std::size_t i = 0; i < suspects.size(); ++i) {
+    if (!needs[i]) continue;
+    const bool independent = picked.size() < budget && pick(mesh, suspects[i], marks);
+    (independent ? picked : waiting).push_back(suspects[i]);
+  }
+  for_chunks(ctx, parallel, "cdt border round: flip", picked.size(),
+             [&](std::size_t begin, std::size_t end) {
+               for (std::size_t i = begin; i < end; ++i) flip(mesh, picked[i], FlipScope{});
+             });
+  suspects.clear();
+  if (picked.empty()) return 0;  // nothing to flip (or no budget left): done
+  for (std::uint32_t h : waiting) list_once(mesh, h, marks, suspects);
+  for (std::uint32_t h : picked) {
+    const std::uint32_t g = mesh.twin[h];
+    for (std::uint32_t e : {next_half_edge(h), next_half_edge(next_half_edge(h)), next_half_edge(g),
+                            next_half_edge(next_half_edge(g))})
+      list_once(mesh, e, marks, suspects);
+  }
+  return picked.size();
+}
+
+}  // namespace
+
+void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::uint32_t s,
+                     std::vector<std::uint32_t>& borders) {
+  for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
+    const std::uint32_t t = partition.order[i];
+    for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h)
+      if (mesh.twin[h] != no_twin && partition.part[mesh.twin[h] / 3] != s) borders.push_back(h);
+  }
+}
+
+std::vector<std::uint32_t> relink_borders(Mesh& mesh,
+                                          const std::vector<std::vector<std::uint32_t>>& sets) {
+  std::vector<std::uint32_t> all;
+  for (const auto& borders : sets) all.insert(all.end(), borders.begin(), borders.end());
+  // By position, not caller index: see pair_by_position in mesh.cpp.
+  const auto ends = [&](std::uint32_t h) {
+    return EdgeEnds(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
+  };
+  std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
+    const EdgeEnds e = ends(h), f = ends(g);
+    return e != f ? e < f : h < g;
+  });
+  std::vector<std::uint32_t> first_of_pair;
+  for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
+    mesh.twin[all[i]] = all[i + 1];
+    mesh.twin[all[i + 1]] = all[i];
+    first_of_pair.push_back(all[i]);
+  }
+  return first_of_pair;
+}
+
+std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
+                         const ParallelContext& ctx, std::size_t budget) {
+  RoundMarks marks;
+  marks.own.assign(mesh.triangles->size(), 0);
+  marks.touched.assign(mesh.triangles->size(), 0);
+  marks.listed.assign(mesh.twin.size(), 0);
+  std::size_t flips = 0;
+  double small_rounds_seconds = 0;  // rounds run here, recorded as one phase
+  while (!suspects.empty()) {
+    const bool small = suspects.size() < min_round_suspects;
+    const auto start = std::chrono::steady_clock::now();
+    flips += flip_round(mesh, suspects, marks, ctx, budget - flips);
+    if (small)
+      small_rounds_seconds +=
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  if (ctx.profile)
+    ctx.profile->phases.push_back({"cdt border rounds, small", {small_rounds_seconds}});
+  return flips;
+}
+
+}  // namespace pear::detail

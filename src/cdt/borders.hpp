@@ -1,0 +1,33 @@
+// The last step of the parallel flips (paper §2.4): the empty-circle condition across the
+// borders of the triangle sets, in rounds of independent flips run in parallel.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "../parallel/context.hpp"
+#include "mesh.hpp"
+#include "partition.hpp"
+
+namespace pear::detail {
+
+/// The half-edges of set s whose twin lies in another set: the set's task did not flip them and
+/// their twins may be stale.
+void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::uint32_t s,
+                     std::vector<std::uint32_t>& borders);
+
+/// Pairs the border half-edges again by their endpoints' positions: the sets' flips moved them
+/// to other slots without telling the other side. Returns one half-edge of each pair, in a
+/// fixed order.
+std::vector<std::uint32_t> relink_borders(Mesh& mesh,
+                                          const std::vector<std::vector<std::uint32_t>>& sets);
+
+/// Flips until every edge is locally Delaunay, given that only the `suspects` may not be, in
+/// rounds: test all suspects (in parallel), pick in list order those whose flips touch disjoint
+/// triangles, flip them (in parallel), and make their outer edges and the suspects left over the
+/// next round's. Small rounds run on this thread. The picks depend on the mesh only, never on
+/// timing or on whether a round ran in parallel. Returns the flip count (at most `budget`).
+std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
+                         const ParallelContext& ctx, std::size_t budget);
+
+}  // namespace pear::detail
