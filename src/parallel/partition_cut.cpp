@@ -1,8 +1,8 @@
 // Paper §2.2, partition and cut: landmarks cut the boundary into chains; each chain is clipped
 // by its own task with its own ear queue (so "top" applies per chain); landmarks are never
-// clipped. Beyond the paper: when a round clipped much, a second round with the landmarks moved
-// by half a chain clips what the first left near the chain ends; the sequential engine then
-// finishes the (small) rest with all its fallbacks.
+// clipped. Beyond the paper: while a round clips enough, another round with the landmarks moved
+// along the boundary clips what the last one left near the chain ends; the sequential engine
+// then finishes the rest with all its fallbacks.
 #include <algorithm>
 
 #include "chain_clipper.hpp"
@@ -12,7 +12,11 @@ namespace pear::detail {
 namespace {
 
 constexpr std::size_t min_chain_nodes = 256;  ///< below this a task costs more than it saves
-constexpr int max_rounds = 3;
+constexpr int max_rounds = 4;
+/// Where round r puts its first landmark, in chain lengths: corridors whose two walls lie in
+/// different chains (a spiral, a thickened curve) are zipped up from their dead ends, so each
+/// round moves the landmarks to where the last round's chain ends had to stop.
+constexpr double landmark_shift[max_rounds] = {0, 0.5, 0.25, 0.75};
 
 /// Appends the parts in order, copying them in parallel.
 void gather(std::vector<TriangleList>& parts, std::size_t count, const ParallelContext& ctx,
@@ -38,7 +42,8 @@ std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const Parallel
   for (int round = 0; round < max_rounds; ++round) {
     const std::size_t chains = std::min(partitions, nodes / min_chain_nodes);
     if (chains < 2) break;
-    const std::size_t offset = round % 2 == 0 ? 0 : nodes / chains / 2;
+    const auto offset =
+        static_cast<std::size_t>(landmark_shift[round] * static_cast<double>(nodes / chains));
     const std::vector<std::size_t> marks = s.place_landmarks(chains, offset, ctx);
     ctx.run_tasks("clip chains", chains, [&](std::size_t c) {
       parts[c].clear();
@@ -50,7 +55,8 @@ std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const Parallel
     gather(parts, chains, ctx, out);
     if (s.refresh_order(ctx) == no_node) return no_node;
     nodes = s.order.size();
-    if (clipped < nodes / 2) break;  // the rest is mostly walls that face other chains
+    // The rest may be walls that face other chains; a shifted round may still zip them.
+    if (round > 0 && clipped < nodes / 16) break;
   }
   return s.order.front();
 }
