@@ -1,42 +1,112 @@
 // An exact check that the cleaned rings form a valid polygon boundary: no two edges cross,
 // overlap, or meet where one of them does not end (a vertex inside another edge). Rings may
-// touch at shared vertices, which the engine handles. A grid of edges decides where edges are
-// short against their spacing; a Shamos-Hoey sweep (O(n log n)) everywhere else.
+// touch at shared vertices, which the engine handles.
+//
+// Method (docs/simplicity.md): an adaptive grid of edge bounding boxes. Cells are processed in
+// parallel; a cell holding many edges gets its own finer grid fitted to them, recursively; a
+// pair of edges is tested once, in the cell holding the lower-left corner of the intersection
+// of their boxes. Where edges are long against their spacing (a random star) no grid separates
+// them: a cell, or the whole polygon, is then decided by a Shamos-Hoey sweep, the whole polygon
+// in vertical slabs swept in parallel. Every decision depends on counts only, never on timing.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
+#include "../parallel/context.hpp"
 #include "clean.hpp"
 #include "uniform_grid.hpp"
 
 namespace pear::detail {
 
+/// The closed bounding box of an edge: exact (min and max of coordinates, no rounding).
+struct EdgeBox {
+  double x0, y0, x1, y1;
+};
+
+/// The rings' edges: edge e runs from vertex e to next[e].
+struct RingEdges {
+  const std::vector<Point>* points = nullptr;
+  std::vector<std::uint32_t> next;
+  std::vector<EdgeBox> boxes;
+  EdgeBox bounds{};       ///< of all edges
+  double extent_sum = 0;  ///< of max(width, height) over the edges' boxes
+
+  std::uint32_t size() const { return static_cast<std::uint32_t>(next.size()); }
+  /// Whether edges e and f (any two) cross, overlap, or one passes through a vertex of the
+  /// other; neighbours in a ring conflict only by folding back over each other.
+  bool conflict(std::uint32_t e, std::uint32_t f) const;
+
+ private:
+  bool separate_edges_conflict(std::uint32_t e, std::uint32_t f) const;
+};
+
+/// The smallest edge index offered by any task: the minimum is the same in any order.
+class SmallestViolation {
+ public:
+  static constexpr std::uint32_t none = UINT32_MAX;
+  std::uint32_t get() const { return value_.load(std::memory_order_relaxed); }
+  void offer(std::uint32_t edge) {
+    std::uint32_t seen = get();
+    while (edge < seen && !value_.compare_exchange_weak(seen, edge, std::memory_order_relaxed)) {
+    }
+  }
+
+ private:
+  std::atomic<std::uint32_t> value_{none};
+};
+
+/// When the grid subdivides and when it hands a cell to the sweep. Counts only: deterministic.
+struct GridLimits {
+  std::uint32_t leaf_edges = 24;       ///< cells with at most this many edges test all pairs
+  double root_entries_per_edge = 3;    ///< more at the root: the grid gives up, slabs are swept
+  double child_entries_per_edge = 3;   ///< more in a finer grid: it does not separate the edges
+  std::uint32_t max_depth = 8;         ///< levels of grids, the root included
+  std::uint32_t all_pairs_edges = 64;  ///< a cell no finer grid helps: all pairs up to here,
+                                       ///< a sweep beyond (unless allow_sweep is false)
+  bool allow_sweep = true;
+};
+
+/// The grid over the whole polygon, kept between calls for its buffers.
+struct RootGrid {
+  GridFrame frame;
+  std::vector<std::uint32_t> cell_start, items;
+  std::vector<std::uint32_t> chunk_counts;  ///< per chunk of edges and cell, for filling
+};
+
+/// Checks every pair of edges sharing a cell; offers the smallest edge of each conflict found.
+/// False when the root grid would hold too many entries (nothing was checked then).
+bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const ParallelContext& ctx,
+                   RootGrid& root, SmallestViolation& found);
+/// Shamos-Hoey on a subset of the edges: a conflict among them (its smaller edge), if any.
+std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
+                                         std::span<const std::uint32_t> subset);
+/// The sweep in `slabs` vertical slabs, in parallel; an edge goes to every slab its box meets.
+void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const ParallelContext& ctx,
+                    SmallestViolation& found);
+
 class SimplicityCheck {
  public:
+  /// `grid_only` (never a sweep, tiny cells: every level of the grid is exercised) and
+  /// `sweep_only` (three slabs) are for tests that compare the methods on small inputs.
   enum class Method : std::uint8_t { automatic, grid_only, sweep_only };
 
-  /// The index (into polygon.points) of a vertex of an offending edge, if any. `grid_only` and
-  /// `sweep_only` are for tests that compare the two (grid_only may give no verdict: nullopt
-  /// then means "gave up", never "simple", so tests must use small inputs).
+  /// The index (into polygon.points) of the first vertex of an edge in a conflict, if any: the
+  /// smallest such index among the conflicts found. The grid finds them all, so where it alone
+  /// decides this is the smallest edge in any conflict; a sweep reports the first it meets. The
+  /// same for any thread count.
   std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon,
+                                              const ParallelContext& ctx,
                                               Method method = Method::automatic);
 
  private:
-  bool edges_conflict(std::uint32_t e, std::uint32_t f) const;
-  bool pair_conflicts(std::uint32_t e, std::uint32_t f) const;
-  struct GridVerdict {
-    bool decided = false;  ///< false: the grid would be too costly for this polygon
-    std::optional<std::uint32_t> violation;
-  };
-  GridVerdict check_on_grid();
-  std::optional<std::uint32_t> sweep();
+  void index_edges(const CleanPolygon& polygon, const ParallelContext& ctx);
 
-  const CleanPolygon* polygon_ = nullptr;
-  std::vector<std::uint32_t> next_;  ///< the next vertex in its ring
-  GridFrame frame_;
-  std::vector<std::uint32_t> cell_start_, items_, fill_;
+  RingEdges edges_;
+  RootGrid root_;
 };
 
 }  // namespace pear::detail

@@ -1,7 +1,8 @@
 // The Shamos-Hoey sweep for SimplicityCheck: edges enter a status ordered bottom to top when the
 // sweep reaches their left end and leave at their right end; only edges that become neighbours
 // there are tested. The first conflict in sweep order is always found before the order could
-// go wrong, and the search stops at the first conflict found.
+// go wrong, and the search stops at the first conflict found. It works on any subset of the
+// edges (a conflict among them is found if there is one), which lets slabs be swept apart.
 #include <algorithm>
 #include <set>
 
@@ -16,11 +17,12 @@ struct Segment {
   Point left, right;
 };
 
-/// Orders edges from bottom to top where the later-starting one begins (or, sharing a start,
-/// just after it). Collinear overlapping edges compare equal in geometry: that is a conflict,
-/// recorded, and ordered by id to stay a strict order.
+/// Orders edges (by position in the subset) from bottom to top where the later-starting one
+/// begins (or, sharing a start, just after it). Collinear overlapping edges compare equal in
+/// geometry: that is a conflict, recorded, and ordered by position to stay a strict order.
 struct Below {
   const std::vector<Segment>* segments;
+  std::span<const std::uint32_t> subset;
   mutable std::uint32_t overlap = UINT32_MAX;
 
   bool operator()(std::uint32_t s, std::uint32_t t) const {
@@ -32,48 +34,57 @@ struct Below {
         later.left == earlier.left ? 0 : orient2d(earlier.left, earlier.right, later.left);
     if (side == 0) side = orient2d(earlier.left, earlier.right, later.right);
     if (side == 0) {
-      overlap = std::min(s, t);
+      overlap = std::min(subset[s], subset[t]);
       return s < t;
     }
     return a_later ? side < 0 : side > 0;  // is a below b?
   }
 };
 
+/// Code 2s inserts the subset's edge s at its left end, 2s + 1 removes it at its right end.
+struct Event {
+  Point at;
+  std::uint32_t code;
+};
+
+/// In sweep order; at one point, removals come before insertions, so edges meeting end to end
+/// are never both in the status. The point is copied in: sorting then reads no other array.
+std::vector<Event> sorted_events(const std::vector<Segment>& segments) {
+  std::vector<Event> events(2 * segments.size());
+  for (std::uint32_t s = 0; s < segments.size(); ++s) {
+    events[2 * s] = {segments[s].left, 2 * s};
+    events[2 * s + 1] = {segments[s].right, 2 * s + 1};
+  }
+  std::sort(events.begin(), events.end(), [](const Event& p, const Event& q) {
+    if (p.at.x != q.at.x) return p.at.x < q.at.x;
+    if (p.at.y != q.at.y) return p.at.y < q.at.y;
+    if (p.code % 2 != q.code % 2) return p.code % 2 > q.code % 2;
+    return p.code < q.code;
+  });
+  return events;
+}
+
 }  // namespace
 
-std::optional<std::uint32_t> SimplicityCheck::sweep() {
-  const auto& pts = polygon_->points;
-  const auto n = static_cast<std::uint32_t>(pts.size());
-  std::vector<Segment> segments(n);
-  for (std::uint32_t e = 0; e < n; ++e) {
-    const Point &a = pts[e], &b = pts[next_[e]];
-    segments[e] = lexicographic_less(a, b) ? Segment{a, b} : Segment{b, a};
+std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
+                                         std::span<const std::uint32_t> subset) {
+  const auto& pts = *edges.points;
+  std::vector<Segment> segments(subset.size());
+  for (std::size_t s = 0; s < subset.size(); ++s) {
+    const Point &a = pts[subset[s]], &b = pts[edges.next[subset[s]]];
+    segments[s] = lexicographic_less(a, b) ? Segment{a, b} : Segment{b, a};
   }
-  // Event 2e inserts edge e at its left end, 2e + 1 removes it at its right end. At one point,
-  // removals come before insertions, so edges meeting end to end are never both in the status.
-  std::vector<std::uint32_t> events(2 * static_cast<std::size_t>(n));
-  for (std::uint32_t i = 0; i < events.size(); ++i) events[i] = i;
-  const auto where = [&](std::uint32_t event) -> const Point& {
-    return event % 2 ? segments[event / 2].right : segments[event / 2].left;
-  };
-  std::sort(events.begin(), events.end(), [&](std::uint32_t x, std::uint32_t y) {
-    const Point &p = where(x), &q = where(y);
-    if (!(p == q)) return lexicographic_less(p, q);
-    if (x % 2 != y % 2) return x % 2 > y % 2;
-    return x < y;
-  });
-
-  Below below{&segments};
+  Below below{&segments, subset};
   std::set<std::uint32_t, Below> status(below);
-  std::vector<std::set<std::uint32_t, Below>::iterator> place(n);
-  const auto conflict = [&](std::uint32_t e, std::uint32_t f) -> std::optional<std::uint32_t> {
-    if (pair_conflicts(e, f)) return std::min(e, f);
+  std::vector<std::set<std::uint32_t, Below>::iterator> place(subset.size());
+  const auto conflict = [&](std::uint32_t s, std::uint32_t t) -> std::optional<std::uint32_t> {
+    if (edges.conflict(subset[s], subset[t])) return std::min(subset[s], subset[t]);
     return std::nullopt;
   };
-  for (std::uint32_t event : events) {
-    const std::uint32_t e = event / 2;
-    if (event % 2) {  // removal: its neighbours meet
-      const auto it = place[e];
+  for (const Event& event : sorted_events(segments)) {
+    const std::uint32_t s = event.code / 2;
+    if (event.code % 2) {  // removal: its neighbours meet
+      const auto it = place[s];
       const auto above = std::next(it);
       const bool has_below = it != status.begin();
       const auto under = has_below ? std::prev(it) : it;
@@ -82,15 +93,44 @@ std::optional<std::uint32_t> SimplicityCheck::sweep() {
         if (const auto found = conflict(*under, *above)) return found;
       continue;
     }
-    const auto [it, inserted] = status.insert(e);
+    const auto [it, inserted] = status.insert(s);
     if (status.key_comp().overlap != UINT32_MAX) return status.key_comp().overlap;
-    place[e] = it;
+    place[s] = it;
     if (it != status.begin())
-      if (const auto found = conflict(*std::prev(it), e)) return found;
+      if (const auto found = conflict(*std::prev(it), s)) return found;
     if (std::next(it) != status.end())
-      if (const auto found = conflict(e, *std::next(it))) return found;
+      if (const auto found = conflict(s, *std::next(it))) return found;
   }
   return std::nullopt;
+}
+
+/// Slab borders at x-quantiles of the edges' left ends. A conflict's point lies in both edges'
+/// x-ranges, so its slab holds both edges: the slabs together miss no conflict.
+void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const ParallelContext& ctx,
+                    SmallestViolation& found) {
+  const std::uint32_t n = edges.size();
+  std::vector<std::vector<std::uint32_t>> lists(slabs);
+  ctx.run_serial("check simplicity: slabs", [&] {
+    std::vector<double> left(n);
+    for (std::uint32_t e = 0; e < n; ++e) left[e] = edges.boxes[e].x0;
+    std::vector<double> borders;
+    for (std::uint32_t s = 1; s < slabs; ++s) {
+      const auto at = left.begin() + static_cast<std::ptrdiff_t>(std::size_t{s} * n / slabs);
+      std::nth_element(left.begin(), at, left.end());
+      borders.push_back(*at);
+    }
+    std::sort(borders.begin(), borders.end());
+    const auto slab_of = [&](double x) {
+      return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
+                                      borders.begin());
+    };
+    for (std::uint32_t e = 0; e < n; ++e)
+      for (std::size_t s = slab_of(edges.boxes[e].x0); s <= slab_of(edges.boxes[e].x1); ++s)
+        lists[s].push_back(e);
+  });
+  ctx.run_tasks("check simplicity: sweep slabs", slabs, [&](std::size_t s) {
+    if (const auto violation = sweep_edges(edges, lists[s])) found.offer(*violation);
+  });
 }
 
 }  // namespace pear::detail
