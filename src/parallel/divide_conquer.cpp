@@ -139,9 +139,23 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
   patches.assign(tasks, {});
   std::vector<std::vector<SteinerTriangle>> fills(tasks);
   std::vector<std::uint8_t> ok(tasks, 1);
+  // Tasks get runs of holes with about equal node counts (one hole may be most of the work).
+  const auto first_hole = [&](std::size_t task) {
+    const std::size_t nodes = task * repair.nodes_before(holes) / tasks;
+    std::size_t lo = 0, hi = holes;  // the first hole with at least `nodes` nodes before it
+    while (lo < hi) {
+      const std::size_t mid = (lo + hi) / 2;
+      if (repair.nodes_before(mid) < nodes)
+        lo = mid + 1;
+      else
+        hi = mid;
+    }
+    return lo;
+  };
   ctx.run_tasks("fill Steiner holes", tasks, [&](std::size_t task) {
-    for (std::size_t h = task * holes / tasks; h < (task + 1) * holes / tasks && ok[task]; ++h)
-      ok[task] = repair.triangulate_hole(h, b, ctx.heuristic, patches[task], fills[task]);
+    HoleClipper scratch;
+    for (std::size_t h = first_hole(task); h < first_hole(task + 1) && ok[task]; ++h)
+      ok[task] = repair.triangulate_hole(h, b, ctx.heuristic, scratch, patches[task], fills[task]);
   });
   if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
   bool fits = false;
@@ -182,6 +196,7 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, const ParallelContext&
   std::vector<PieceCorner> cycle;
   std::vector<SplitLine> lines;
   ctx.run_serial("place split lines", [&] {
+    cycle.reserve(b.size());
     std::uint32_t v = entry;
     do {
       cycle.push_back(v);

@@ -175,23 +175,24 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
 }
 
 bool SteinerRepair::triangulate_hole(std::size_t h, const Boundary& b, EarHeuristic heuristic,
-                                     TriangleList& out,
+                                     HoleClipper& scratch, TriangleList& out,
                                      std::vector<SteinerTriangle>& corners) const {
   const std::uint32_t first = starts_[h], count = starts_[h + 1] - first;
   if (count < 3) return true;  // a -> s -> b against b -> a: the hole had no area
-  Boundary hole;
-  for (std::uint32_t i = 0; i < count; ++i) hole.add(b.pos[nodes_[first + i]], i);
-  for (std::uint32_t i = 0; i < count; ++i) hole.link(i, i + 1 == count ? 0 : i + 1);
-  TriangleList local;
-  EarClipper clipper;
-  if (!clipper.run(hole, 0, heuristic, local)) return false;
-  for (const auto& t : local) {
-    if (!(orient2d(b.pos[nodes_[first + t[0]]], b.pos[nodes_[first + t[1]]],
-                   b.pos[nodes_[first + t[2]]]) > 0))
-      return false;
-    out.push_back({b.vertex[nodes_[first + t[0]]], b.vertex[nodes_[first + t[1]]],
-                   b.vertex[nodes_[first + t[2]]]});
-    corners.push_back({nodes_[first + t[0]], nodes_[first + t[1]], nodes_[first + t[2]]});
+  const std::uint32_t* nodes = &nodes_[first];
+  scratch.local.clear();
+  if (count == 3) {
+    scratch.local.push_back({0, 1, 2});
+  } else {
+    scratch.hole.clear();
+    for (std::uint32_t i = 0; i < count; ++i) scratch.hole.add(b.pos[nodes[i]], i);
+    for (std::uint32_t i = 0; i < count; ++i) scratch.hole.link(i, i + 1 == count ? 0 : i + 1);
+    if (!scratch.clipper.run(scratch.hole, 0, heuristic, scratch.local)) return false;
+  }
+  for (const auto& t : scratch.local) {
+    if (!(orient2d(b.pos[nodes[t[0]]], b.pos[nodes[t[1]]], b.pos[nodes[t[2]]]) > 0)) return false;
+    out.push_back({b.vertex[nodes[t[0]]], b.vertex[nodes[t[1]]], b.vertex[nodes[t[2]]]});
+    corners.push_back({nodes[t[0]], nodes[t[1]], nodes[t[2]]});
   }
   return true;
 }

@@ -25,6 +25,13 @@ namespace pear::detail {
 /// A triangle of a part with at least one Steiner corner, counterclockwise.
 using SteinerTriangle = std::array<PieceCorner, 3>;
 
+/// A task's scratch memory for clipping holes.
+struct HoleClipper {
+  Boundary hole;
+  TriangleList local;
+  EarClipper clipper;
+};
+
 class SteinerRepair {
  public:
   /// Finds the holes the triangles leave: one boundary cycle of input nodes per connected
@@ -37,11 +44,14 @@ class SteinerRepair {
                   std::vector<std::uint8_t> on_boundary);
 
   std::size_t hole_count() const { return starts_.size() - 1; }
+  /// How many nodes the holes before h have together.
+  std::size_t nodes_before(std::size_t h) const { return starts_[h]; }
 
   /// Triangulates hole h from its input vertices; appends the triangles in caller indices to
   /// out and in corners to `corners`. Returns false unless every triangle is strictly
   /// counterclockwise.
-  bool triangulate_hole(std::size_t h, const Boundary& b, EarHeuristic heuristic, TriangleList& out,
+  bool triangulate_hole(std::size_t h, const Boundary& b, EarHeuristic heuristic,
+                        HoleClipper& scratch, TriangleList& out,
                         std::vector<SteinerTriangle>& corners) const;
 
   /// Whether the holes' triangles (`fill`) have the boundary of the removed triangles with

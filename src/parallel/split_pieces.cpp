@@ -79,10 +79,13 @@ bool PieceSplitter::find_crossings(const Boundary& b, std::vector<SplitLine>& li
                                    std::uint32_t count) {
   crossings_.clear();
   const double x = lines[line].x;
+  const bool first_left = corner_pos(b, lines, corners[0]).x < x;
+  bool v_left = first_left;  // each corner's side is computed once
   for (std::uint32_t i = 0; i < count; ++i) {
     const PieceCorner u = corners[i], v = corners[i + 1 == count ? 0 : i + 1];
-    const bool u_left = corner_pos(b, lines, u).x < x;
-    if (u_left == (corner_pos(b, lines, v).x < x)) continue;
+    const bool u_left = v_left;
+    v_left = i + 1 == count ? first_left : corner_pos(b, lines, v).x < x;
+    if (u_left == v_left) continue;
     // Only sub-segments of input edges cross: split segments are vertical on other lines.
     const std::uint32_t from =
         is_steiner(u) ? lines[corner_line(u)].steiner[corner_index(u)].from : corner_index(u);
