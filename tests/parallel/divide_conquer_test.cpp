@@ -98,8 +98,8 @@ TEST(DivideAndConquer, SplitLinesThroughHoles) {
 }
 
 TEST(DivideAndConquer, SteinerPointsOnBridges) {
-  // One thin hole far right of the outer ring's leftmost point, holes stacked at one x: their
-  // bridges run across the lines, so Steiner points fall on both sides of a bridge.
+  // Small holes stacked at one x far right of the outer ring's leftmost point: their bridges
+  // run across the lines, so Steiner points fall on both sides of a bridge.
   Polygon polygon = {{{0, 0}, {50, -40}, {100, 0}, {50, 40}}};
   for (int i = -3; i <= 3; ++i)
     polygon.push_back(reversed({{70, 4.0 * i}, {72, 4.0 * i + 1}, {71, 4.0 * i + 2}}));
@@ -144,6 +144,18 @@ TEST(DivideAndConquer, TouchingHoles) {
                            {{6, 3}, {8, 1}, {10, 3}, {8, 5}},
                            {{10, 3}, {12, 0}, {11, 3}, {12, 6}}};
   EXPECT_EQ(expect_valid(polygon), 0);
+}
+
+TEST(DivideAndConquer, PinchNodesUsedInterchangeably) {
+  // Regression: pairs of holes touching at a vertex, bridged across the split line. A part's
+  // clipper may use either node of a touching vertex, and the repair, matching triangle edges
+  // by node, found a flat hole and dropped a triangle; corners are now matched by point.
+  const Polygon polygon = {rectangle(0, 0, 20, 8),
+                           {{5, 6}, {5, 3}, {3, 3}},
+                           {{5, 3}, {7, 3}, {5, 1}},
+                           {{15, 6}, {15, 5}, {13, 5}},
+                           {{15, 5}, {17, 5}, {15, 4}}};
+  expect_split_cleanly(polygon, {2, 3, 4, 8});
 }
 
 TEST(DivideAndConquer, MorePartitionsThanVertices) {
