@@ -126,9 +126,14 @@ bool PieceSplitter::pair_crossings(const std::vector<SplitLine>& lines, std::uin
     const int order = compare_along_line(crossings_[i], crossings_[j]);
     return order < 0 || (order == 0 && !crossings_[i].rightward && crossings_[j].rightward);
   };
+  // A budget on the swaps: many crossings within an ulp of each other (contrived input) would
+  // make this quadratic; the split fails instead and the sequential engine takes over.
+  std::size_t budget = 64 * count + 4096;
   for (std::size_t i = 1; i < count; ++i)
-    for (std::size_t j = i; j > 0 && before(order_[j], order_[j - 1]); --j)
+    for (std::size_t j = i; j > 0 && before(order_[j], order_[j - 1]); --j) {
+      if (budget-- == 0) return false;
       std::swap(order_[j], order_[j - 1]);
+    }
   for (std::size_t k = 0; k < count; k += 2) {
     const std::uint32_t bottom = order_[k], top = order_[k + 1];
     if (!crossings_[bottom].rightward || crossings_[top].rightward) return false;
