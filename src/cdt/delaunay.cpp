@@ -52,9 +52,14 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const Para
   std::vector<std::vector<std::uint32_t>> borders(sets);
   ctx.run_tasks("cdt flip sets", sets, [&](std::size_t s) {
     const FlipScope scope{partition.part.data(), static_cast<std::uint32_t>(s)};
+    // Triangle order, as in the sequential loop: the stack then pops the last clipped ears
+    // first, which needed fewer flips than walk order (spiral: 1.5 against 3.5 per edge).
+    const auto first = partition.order.begin() + static_cast<std::ptrdiff_t>(partition.begin[s]);
+    const auto last = partition.order.begin() + static_cast<std::ptrdiff_t>(partition.begin[s + 1]);
+    std::sort(first, last);
     std::vector<std::uint32_t> stack;
-    for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
-      const std::uint32_t t = partition.order[i];
+    for (auto it = first; it != last; ++it) {
+      const std::uint32_t t = *it;
       for (std::uint32_t h = 3 * t; h < 3 * t + 3; ++h) {
         const std::uint32_t g = mesh.twin[h];
         if (g == no_twin || g < h || !scope.contains(g)) continue;
