@@ -4,7 +4,9 @@ faster than CGAL), one row per input."""
 import json
 import sys
 
-ENTRIES = ["pear_ear_t1", "pear_cdt_t1", "pear_cdt_t2", "cgal_cdt", "geos_cdt"]
+ENTRIES = ["pear_ear_t1", "pear_cdt_t1", "pear_cdt_fast_t1", "pear_cdt_t2", "pear_cdt_fast_t2",
+           "cgal_cdt", "geos_cdt"]
+RATIOS = ["pear_cdt_t1", "pear_cdt_fast_t1", "pear_cdt_t2", "pear_cdt_fast_t2"]
 
 
 def medians(path):
@@ -15,25 +17,28 @@ def medians(path):
         _, folder, name, entry = run["run_name"].split("/")[:4]
         key = folder + "/" + name
         times.setdefault(key, {})[entry] = run["real_time"]
-        if entry == "pear_cdt_t2":
-            counters[key] = run
+        counters[(key, entry)] = run
     return times, counters
 
 
 def main():
     times, counters = medians(sys.argv[1])
     print("| input | " + " | ".join(e + " ms" for e in ENTRIES) +
-          " | CGAL / pear_cdt_t1 | CGAL / pear_cdt_t2 | flips per edge (in sets + borders, t2) |")
-    print("|---" * (len(ENTRIES) + 4) + "|")
+          " | " + " | ".join("CGAL / " + e for e in RATIOS) +
+          " | flips per edge t1 | t2 (in sets + borders) |")
+    print("|---" * (len(ENTRIES) + len(RATIOS) + 3) + "|")
     for key, row in times.items():
         cells = ["%.1f" % row[e] if e in row else "-" for e in ENTRIES]
         cgal = row.get("cgal_cdt")
         ratios = ["%.2fx" % (cgal / row[e]) if cgal and e in row else "-"
-                  for e in ("pear_cdt_t1", "pear_cdt_t2")]
-        c = counters.get(key, {})
-        flips = "%.3f (%.3f + %.3f)" % (c.get("flips_per_edge", 0), c.get("in_partitions_per_edge", 0),
-                                        c.get("on_borders_per_edge", 0)) if c else "-"
-        print("| " + " | ".join([key] + cells + ratios + [flips]) + " |")
+                  for e in RATIOS]
+        one = counters.get((key, "pear_cdt_t1"), {})
+        two = counters.get((key, "pear_cdt_t2"), {})
+        flips_one = "%.3f" % one.get("flips_per_edge", 0) if one else "-"
+        flips_two = "%.3f (%.3f + %.3f)" % (
+            two.get("flips_per_edge", 0), two.get("in_partitions_per_edge", 0),
+            two.get("on_borders_per_edge", 0)) if two else "-"
+        print("| " + " | ".join([key] + cells + ratios + [flips_one, flips_two]) + " |")
 
 
 if __name__ == "__main__":
