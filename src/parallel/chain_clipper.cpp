@@ -1,5 +1,7 @@
 #include "chain_clipper.hpp"
 
+#include <span>
+
 #include "../earclip/ear_test.hpp"
 
 namespace pear::detail {
@@ -28,9 +30,9 @@ void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
   const std::uint32_t p = b.prev[v], n = b.next[v];
   if (!own(p) || !own(n)) return;
-  // Where rings touch (pinches) the sequential engine dissolves the spikes that clipping leaves
-  // and falls back when it must; leave those places to it.
-  if (s_->pinch[p] || s_->pinch[v] || s_->pinch[n]) return;
+  // Next to a spike that could not be dissolved (it reaches into another chain) the ear test's
+  // argument does not hold; the sequential engine will dissolve it first.
+  if (b.pos[b.prev[p]] == b.pos[v] || b.pos[b.next[n]] == b.pos[v]) return;
   if (!is_ear(v)) return;
   queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]});
 }
@@ -44,6 +46,41 @@ void ChainClipper::unhash(std::uint32_t v) {
 void ChainClipper::update(std::uint32_t v) {
   if (s_->hashed[v] && !s_->pinch[v] && s_->b->turn(v) >= 0) unhash(v);
   ++s_->stamp[v];
+}
+
+void ChainClipper::remove(std::uint32_t v) {
+  s_->b->unlink(v);
+  s_->alive[v] = 0;
+  unhash(v);
+}
+
+/// As the sequential engine does: a node whose neighbours coincide is the tip of a zero-area
+/// spike (what clipping leaves of a lobe where rings touch); it and its successor leave without
+/// a triangle. Only where all the nodes involved are the chain's own. Returns a live node where
+/// the last change happened, or v.
+std::uint32_t ChainClipper::dissolve_spikes(std::uint32_t v) {
+  const Boundary& b = *s_->b;
+  while (own(v)) {
+    const std::uint32_t p = b.prev[v], n = b.next[v];
+    if (!(b.pos[p] == b.pos[n]) || !own(p) || !own(n) || !own(b.next[n])) break;
+    remove(v);
+    remove(n);
+    v = p;
+  }
+  return v;
+}
+
+/// After a clip next to v: dissolve spikes, refresh the convexity and ear status around v.
+void ChainClipper::settle(std::uint32_t v) {
+  if (!s_->alive[v]) return;
+  const std::uint32_t u = dissolve_spikes(v);
+  const Boundary& b = *s_->b;
+  const std::uint32_t around[3] = {b.prev[u], u, b.next[u]};
+  for (std::uint32_t w : u == v ? std::span(around + 1, 1) : std::span(around)) {
+    if (!own(w)) continue;
+    update(w);
+    offer(w);
+  }
 }
 
 void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first, std::size_t last,
@@ -65,13 +102,9 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
     if (!s.alive[v] || s.stamp[v] != top.stamp) continue;
     const std::uint32_t p = b.prev[v], n = b.next[v];
     out.push_back({b.vertex[p], b.vertex[v], b.vertex[n]});
-    b.unlink(v);
-    s.alive[v] = 0;
-    unhash(v);
-    update(p);
-    update(n);
-    offer(n);
-    offer(p);
+    remove(v);
+    settle(n);
+    settle(p);
   }
 }
 

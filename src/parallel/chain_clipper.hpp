@@ -30,6 +30,9 @@ class ChainClipper {
   /// After v lost a neighbour: it may have stopped being strictly reflex.
   void update(std::uint32_t v);
   void unhash(std::uint32_t v);
+  void remove(std::uint32_t v);
+  std::uint32_t dissolve_spikes(std::uint32_t v);
+  void settle(std::uint32_t v);
 
   SharedBoundary* s_ = nullptr;
   std::uint32_t chain_ = 0;
