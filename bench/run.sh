@@ -5,7 +5,7 @@
 # docs/results/DATE-MODE-*.json with the machine described, renders docs/figures/*.svg|png and
 # writes docs/benchmarks.md.
 #
-#   bench/run.sh [quick|full] [--build DIR] [--commit REV] [--report-only]
+#   bench/run.sh [quick|full] [--build DIR] [--commit REV] [--build-only|--report-only]
 #
 # quick: a few minutes; a subset of sizes and variants, one repetition, still the largest
 #        coastline (Eurasia, 1.5M vertices) for the headline ratios.
@@ -13,7 +13,8 @@
 # --commit REV: measure that commit, exported with `git archive` into DIR/snapshot (a shared
 #        working tree with other people's unfinished edits need not compile); default: the
 #        working tree as it is.
-# --report-only: skip building and running; re-render from the JSON of today's MODE run.
+# --build-only: stop after building. --report-only: skip building and running; re-render from
+#        the JSON of today's MODE run.
 # Needs: Meson, Ninja, Google Benchmark; peers and zlib when found; python3-matplotlib.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -21,13 +22,18 @@ mode=quick
 build=build-bench
 commit=""
 report_only=0
+build_only=0
 while [[ $# -gt 0 ]]; do
   case $1 in
     quick | full) mode=$1 ;;
     --build) build=$2; shift ;;
     --commit) commit=$2; shift ;;
     --report-only) report_only=1 ;;
-    *) echo "usage: $0 [quick|full] [--build DIR] [--commit REV] [--report-only]" >&2; exit 2 ;;
+    --build-only) build_only=1 ;;
+    *)
+      echo "usage: $0 [quick|full] [--build DIR] [--commit REV] [--build-only|--report-only]" >&2
+      exit 2
+      ;;
   esac
   shift
 done
@@ -48,7 +54,13 @@ if [[ -n $commit ]]; then
   export_dir="$build/snapshot/export"
   rm -rf "$export_dir" && mkdir -p "$export_dir" "$source_dir"
   git -C "$root" archive "$commit" | tar -x -C "$export_dir"
-  rsync -rc --delete "$export_dir/" "$source_dir/"
+  (cd "$export_dir" && find . -type f) | while read -r file; do
+    cmp -s "$export_dir/$file" "$source_dir/$file" ||
+      { mkdir -p "$(dirname "$source_dir/$file")" && cp "$export_dir/$file" "$source_dir/$file"; }
+  done
+  (cd "$source_dir" && find . -type f) | while read -r file; do
+    [[ -e $export_dir/$file ]] || rm "$source_dir/$file"
+  done
   build="$build/snapshot/build"
 fi
 described_commit=$(git -C "$root" rev-parse --short "${commit:-HEAD}")
@@ -60,12 +72,12 @@ if [[ $report_only -eq 0 ]]; then
     meson setup "$build" "$source_dir" --buildtype=release -Dbench=enabled -Dtests=disabled \
       -Dcli=disabled -Dfuzz=disabled
   ninja -C "$build" -j2 bench/triangulate/bench_triangulate bench/paper/paper_experiments
+  [[ $build_only -eq 1 ]] && exit 0
 
   # What each mode runs. The regular expression picks triangulators (bench_triangulate's
   # benchmarks are named triangulate/INPUT/TRIANGULATOR).
   peers='cgal_cdt|geos_ear|geos_cdt|glu'
   if [[ $mode = quick ]]; then
-    export PEAR_BENCH_FAMILIES=${PEAR_BENCH_FAMILIES:-koch,spiral,random,holes}
     export PEAR_BENCH_SIZES=${PEAR_BENCH_SIZES:-10000,100000}
     export PEAR_BENCH_COASTS=${PEAR_BENCH_COASTS:-borneo,australia,eurasia}
     export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-8}
@@ -73,6 +85,7 @@ if [[ $report_only -eq 0 ]]; then
     bench_flags=(--benchmark_repetitions=1 --benchmark_min_time=0.05)
     quality_max=20000
     profile_max=250000
+    export PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-1}
   else
     export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-30}
     filter="triangulate/.*"

@@ -6,7 +6,8 @@
 //   paper_experiments ears|profile|quality [max_vertices]
 //
 // Inputs: ears and quality walk the corpus folders (PEAR_BENCH_CORPUS) and the generator
-// families at 10k vertices; profile uses the benchmark's inputs (PEAR_BENCH_SIZES, ...).
+// families at 10k vertices; profile uses the benchmark's inputs (PEAR_BENCH_SIZES, ...) of
+// 10k vertices and more, each run PEAR_BENCH_PROFILE_RUNS times (default 3, 1 above 1M).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -139,7 +140,10 @@ void write_profile(Json& out, const pear::RunProfile& profile, double wall) {
 
 void profile_input(Json& out, const Input& input) {
   const pear::Polygon polygon = input.load();
-  const int runs = input.vertices > 1'000'000 ? 1 : 3;
+  const char* runs_text = std::getenv("PEAR_BENCH_PROFILE_RUNS");
+  const int runs = runs_text != nullptr         ? std::max(1, std::atoi(runs_text))
+                   : input.vertices > 1'000'000 ? 1
+                                                : 3;
   std::size_t vertices = 0;
   for (const auto& ring : polygon) vertices += ring.size();
   out.begin_object().field("input", input.name).field("vertices", vertices);
