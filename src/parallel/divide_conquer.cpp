@@ -182,9 +182,15 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
     return false;
   std::vector<TriangleList> patches;
   if (!remove_steiner_points(b, lines, parts, ctx, patches)) return false;
-  ctx.run_serial("gather", [&] {
-    for (const PartResult& part : parts) out.insert(out.end(), part.kept.begin(), part.kept.end());
-    for (const TriangleList& patch : patches) out.insert(out.end(), patch.begin(), patch.end());
+  // The parts' triangles, then the holes', each copied by its own task to its place in `out`.
+  std::vector<const TriangleList*> lists;
+  for (const PartResult& part : parts) lists.push_back(&part.kept);
+  for (const TriangleList& patch : patches) lists.push_back(&patch);
+  std::vector<std::size_t> offset(1, out.size());
+  for (const TriangleList* list : lists) offset.push_back(offset.back() + list->size());
+  out.resize(offset.back());
+  ctx.run_tasks("gather", lists.size(), [&](std::size_t i) {
+    std::copy(lists[i]->begin(), lists[i]->end(), out.begin() + offset[i]);
   });
   return true;
 }
