@@ -85,7 +85,7 @@ if [[ $report_only -eq 0 ]]; then
     bench_flags=(--benchmark_repetitions=1 --benchmark_min_time=0.05)
     quality_max=20000
     profile_max=250000
-    export PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-1}
+    export PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-2}
   else
     export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-30}
     filter="triangulate/.*"

@@ -47,15 +47,17 @@ def fig7_ears(ears, docs):
     left.set_ylabel("fraction of vertices that are ears")
     left.axhline(0.5, color="k", lw=0.5, ls=":")
     left.legend(fontsize=7, markerscale=2)
-    fractions = [e["ears"] / e["vertices"] for e in ears if e["vertices"] > 0]
-    convex = [e["convex"] / e["vertices"] for e in ears if e["vertices"] > 0]
+    # Tiny polygons (most counties) have few possible fractions; leave them out of the histogram.
+    large = [e for e in ears if e["vertices"] >= 100]
+    fractions = [e["ears"] / e["vertices"] for e in large]
+    convex = [e["convex"] / e["vertices"] for e in large]
     bins = [i / 40 for i in range(41)]
     right.hist(fractions, bins=bins, alpha=0.7, label="ears")
     right.hist(convex, bins=bins, alpha=0.5, label="convex vertices")
     right.set_xlabel("fraction of a polygon's vertices")
-    right.set_ylabel("polygons")
+    right.set_ylabel(f"polygons with >= 100 vertices ({len(large)})")
     right.legend(fontsize=8)
-    fig.suptitle(f"Fig. 7: ear prevalence over {len(fractions)} polygons")
+    fig.suptitle(f"Fig. 7: ear prevalence over {len(ears)} polygons")
     return save(fig, docs, "fig7-ears")
 
 

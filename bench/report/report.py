@@ -48,9 +48,13 @@ def headline(t):
         if r is None:
             lines.append(f"- {key}: no valid result to compare")
             continue
+        cpu = ""
+        if "threads" not in key:  # both single-threaded: CPU time is steadier under load
+            cpu_r = tables.ratio(t.get(inp, peer)["cpu_ms"], t.get(inp, pear)["cpu_ms"])
+            cpu = f"; by CPU time {cpu_r:.2f}x"
         lines.append(f"- {key}: {pear} {tables.fmt_ms(pear_ms)} ms against {peer} "
                      f"{tables.fmt_ms(peer_ms)} ms: **{r:.2f}x** "
-                     f"({'pear faster' if r >= 1 else 'pear slower'})")
+                     f"({'pear faster' if r >= 1 else 'pear slower'}{cpu})")
     return "\n".join(lines) + "\n", numbers
 
 

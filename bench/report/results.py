@@ -48,6 +48,7 @@ class Timings:
     def _entry(b):
         entry = {k: v for k, v in b.items() if isinstance(v, (int, float))}
         entry["ms"] = b["real_time"] * UNITS[b.get("time_unit", "ns")]
+        entry["cpu_ms"] = b["cpu_time"] * UNITS[b.get("time_unit", "ns")]
         return entry
 
     def get(self, inp, tri):
