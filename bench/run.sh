@@ -81,7 +81,7 @@ if [[ $report_only -eq 0 ]]; then
     export PEAR_BENCH_SIZES=${PEAR_BENCH_SIZES:-10000,100000}
     export PEAR_BENCH_COASTS=${PEAR_BENCH_COASTS:-borneo,australia,eurasia}
     export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-8}
-    filter="triangulate/.*/(pear_(top|fast|cdt)|pear_(pc|mc|dc)_t[12]|pear_pc_t2_cdt|$peers)/real_time$"
+    filter="triangulate/.*/(pear_(top|fast|cdt)|pear_(pc|mc|dc)_t[12]|pear_auto_t2|pear_pc_t2_cdt|$peers)/real_time$"
     bench_flags=(--benchmark_repetitions=1 --benchmark_min_time=0.05)
     quality_max=20000
     profile_max=250000
