@@ -2,7 +2,8 @@
 # Fuzzes one target with libFuzzer for a while: fuzz/run.sh TARGET SECONDS [libFuzzer options]
 # TARGET: degenerate bridged parallel cdt readers. Sets up build-fuzz (clang, libFuzzer, ASan,
 # UBSan; FUZZ_BUILD names another) when it is missing and builds only the target. The seeds in
-# corpus/fuzz/TARGET are read, never written; inputs libFuzzer finds go to
+# corpus/fuzz/TARGET are read, never written; an input slower than FUZZ_TIMEOUT seconds (30) is
+# reported as a hang; inputs libFuzzer finds go to
 # BUILD/fuzz-corpus/TARGET, a crash to BUILD/fuzz-artifacts/TARGET/ (then the exit status is 1).
 # Add a crash to corpus/fuzz/TARGET/crash-WHAT to keep it as a regression input.
 set -euo pipefail
@@ -20,7 +21,7 @@ flock "$build/.fuzz-build.lock" ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$tar
 work=$build/fuzz-corpus/$target
 artifacts=$build/fuzz-artifacts/$target/
 mkdir -p "$work" "$artifacts"
-options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=8192
+options=(-max_total_time="$seconds" -timeout="${FUZZ_TIMEOUT:-30}" -rss_limit_mb=2048 -max_len=8192
          -print_final_stats=1 -artifact_prefix="$artifacts")
 [[ -f fuzz/$target.dict ]] && options+=(-dict="fuzz/$target.dict")
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-halt_on_error=1:print_stacktrace=1}
