@@ -16,7 +16,7 @@ bool opposite(double s, double t) {
 /// Slabs for the sweep when the grid gives up: enough for two to four threads, few enough that
 /// the edges crossing slab borders (swept twice) stay a small part. Depends on n only.
 std::uint32_t slab_count(std::uint32_t n) {
-  return std::clamp<std::uint32_t>(n / 16384, 1, 4);
+  return std::clamp<std::uint32_t>(n / 16384, 1, 2);
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ class SmallestViolation {
 /// When the grid subdivides and when it hands a cell to the sweep. Counts only: deterministic.
 struct GridLimits {
   std::uint32_t leaf_edges = 24;       ///< cells with at most this many edges test all pairs
-  double root_entries_per_edge = 3;    ///< more at the root: the grid gives up, slabs are swept
+  double root_entries_per_edge = 3;    ///< more in a chunk of edges at the root: slabs swept
   double child_entries_per_edge = 3;   ///< more in a finer grid: it does not separate the edges
   std::uint32_t max_depth = 8;         ///< levels of grids, the root included
   std::uint32_t all_pairs_edges = 64;  ///< a cell no finer grid helps: all pairs up to here,

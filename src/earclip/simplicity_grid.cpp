@@ -197,12 +197,14 @@ std::pair<std::size_t, std::size_t> piece(std::size_t i, std::size_t pieces, std
 /// bucket_edges for all edges, in parallel: each chunk of edges counts its entries per cell,
 /// the counts become per-chunk fill positions (cell by cell, chunk by chunk, so a cell lists
 /// its edges in increasing order, as bucket_edges does), and each chunk fills its entries.
-bool bucket_root(const RingEdges& edges, std::size_t max_entries, const ParallelContext& ctx,
+/// False as soon as a chunk has more than `entries_per_edge` entries per edge of its own.
+bool bucket_root(const RingEdges& edges, double entries_per_edge, const ParallelContext& ctx,
                  RootGrid& root) {
   const std::size_t n = edges.size(), cells = root.frame.cell_count();
   const std::size_t chunks = std::clamp<std::size_t>(n / 32768, 1, 8);
   root.chunk_counts.resize(chunks * cells);
   std::vector<std::size_t> chunk_entries(chunks, 0);
+  std::vector<char> too_many(chunks, false);
   // Visits each edge of a chunk (its entry count: false stops) and then its entries.
   const auto for_each_entry = [&](std::size_t chunk, auto&& edge, auto&& entry) {
     const auto [first, last] = piece(chunk, chunks, n);
@@ -217,15 +219,18 @@ bool bucket_root(const RingEdges& edges, std::size_t max_entries, const Parallel
   };
   ctx.run_tasks("check simplicity: root grid count", chunks, [&](std::size_t chunk) {
     std::fill_n(root.chunk_counts.begin() + chunk * cells, cells, 0);
+    const auto [first, last] = piece(chunk, chunks, n);
+    const double max_entries = entries_per_edge * static_cast<double>(last - first);
     std::size_t entries = 0;
     for_each_entry(
-        chunk, [&](std::size_t k) { return (entries += k) <= max_entries; },
+        chunk, [&](std::size_t k) { return static_cast<double>(entries += k) <= max_entries; },
         [](std::uint32_t& count, std::uint32_t) { ++count; });
-    chunk_entries[chunk] = entries;  // above max_entries if it stopped early
+    chunk_entries[chunk] = entries;
+    too_many[chunk] = static_cast<double>(entries) > max_entries;
   });
+  if (std::find(too_many.begin(), too_many.end(), true) != too_many.end()) return false;
   std::size_t entries = 0;
   for (std::size_t e : chunk_entries) entries += e;
-  if (entries > max_entries) return false;
   root.cell_start.resize(cells + 1);
   std::vector<std::size_t> range_start(chunks + 1, 0);
   ctx.run_tasks("check simplicity: root grid offsets", chunks, [&](std::size_t range) {
@@ -264,9 +269,7 @@ bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const Paral
   // About two edges a cell over the bounding box, whatever the edges' lengths: where edges
   // are long against that (a star), the root holds too many entries and the slabs decide.
   root.frame.fit(lo, hi, std::size_t{n} / 2 + 1);
-  const double cap = limits.root_entries_per_edge * n;
-  if (!bucket_root(edges, cap < 1e18 ? static_cast<std::size_t>(cap) : SIZE_MAX, ctx, root))
-    return false;
+  if (!bucket_root(edges, limits.root_entries_per_edge, ctx, root)) return false;
   const std::vector<std::size_t> cuts = task_cuts(root.cell_start);
   ctx.run_tasks("check simplicity: cells", cuts.size() - 1, [&](std::size_t task) {
     const std::size_t first = cuts[task], last = cuts[task + 1];
