@@ -86,7 +86,8 @@ TEST(Cdt, BorderRoundsRunInParallelAndGiveTheSameCdt) {
   Triangles first;
   for (unsigned threads : {1u, 2u, 4u}) {
     RunProfile profile;
-    Options options{.delaunay = true,
+    Options options{.algorithm = Algorithm::sequential,
+                    .delaunay = true,
                     .threads = threads,
                     .partitions = 4,
                     .executor = executor_for(threads),
