@@ -87,10 +87,10 @@ struct RunProfile {
 
 /// What the constrained Delaunay conversion did (Options::delaunay).
 struct DelaunayStatistics {
-  std::size_t edges = 0;              ///< interior edges that are not constraints
-  std::size_t flips = 0;              ///< all flips
+  std::size_t edges = 0;                ///< interior edges that are not constraints
+  std::size_t flips = 0;                ///< all flips
   std::size_t flips_in_partitions = 0;  ///< flips done by the parallel tasks
-  std::size_t flips_on_borders = 0;   ///< flips in the fix-up across partition borders
+  std::size_t flips_on_borders = 0;     ///< flips in the fix-up across partition borders
 };
 
 /// Ear statistics of a polygon's (bridged) boundary before clipping: the paper's Fig. 7 numbers.

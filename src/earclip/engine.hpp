@@ -13,9 +13,9 @@ namespace pear::detail {
 
 class Engine {
  public:
-  Status triangulate(const FlatPolygon& input, const Options& options,
-                     const ParallelContext& ctx, TriangleList& out,
-                     std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  Status triangulate(const FlatPolygon& input, const Options& options, const ParallelContext& ctx,
+                     TriangleList& out, std::vector<Diagnostic>& diagnostics,
+                     DelaunayStatistics& delaunay);
   EarStatistics statistics(const FlatPolygon& input);
 
  private:
