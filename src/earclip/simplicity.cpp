@@ -66,33 +66,20 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const ParallelCon
   }
   const std::size_t chunk = 1 << 16, chunks = (n + chunk - 1) / chunk;
   std::vector<EdgeBox> bounds(chunks);
-  std::vector<double> extents(chunks, 0.0);
   ctx.run_tasks("check simplicity: edge boxes", chunks, [&](std::size_t i) {
     const auto& pts = polygon.points;
     const std::size_t end = std::min<std::size_t>(n, (i + 1) * chunk);
-    double extent = 0;
     EdgeBox all = {pts[i * chunk].x, pts[i * chunk].y, pts[i * chunk].x, pts[i * chunk].y};
     for (std::size_t e = i * chunk; e < end; ++e) {
       const Point &a = pts[e], &b = pts[edges_.next[e]];
-      const EdgeBox box{std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                        std::max(a.y, b.y)};
-      edges_.boxes[e] = box;
-      all = {std::min(all.x0, box.x0), std::min(all.y0, box.y0), std::max(all.x1, box.x1),
-             std::max(all.y1, box.y1)};
-      extent += std::max(box.x1 - box.x0, box.y1 - box.y0);
+      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                         std::max(a.y, b.y)};
+      all = merged(all, edges_.boxes[e]);
     }
     bounds[i] = all;
-    extents[i] = extent;
   });
-  // Combined in chunk order: the sum is the same for any thread count.
   edges_.bounds = bounds[0];
-  edges_.extent_sum = 0;
-  for (std::size_t i = 0; i < chunks; ++i) {
-    const EdgeBox& b = bounds[i];
-    edges_.bounds = {std::min(edges_.bounds.x0, b.x0), std::min(edges_.bounds.y0, b.y0),
-                     std::max(edges_.bounds.x1, b.x1), std::max(edges_.bounds.y1, b.y1)};
-    edges_.extent_sum += extents[i];
-  }
+  for (const EdgeBox& b : bounds) edges_.bounds = merged(edges_.bounds, b);
 }
 
 std::optional<std::uint32_t> SimplicityCheck::find_violation(const CleanPolygon& polygon,

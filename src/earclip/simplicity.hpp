@@ -10,6 +10,7 @@
 // in vertical slabs swept in parallel. Every decision depends on counts only, never on timing.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <optional>
@@ -27,13 +28,16 @@ struct EdgeBox {
   double x0, y0, x1, y1;
 };
 
+inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
 /// The rings' edges: edge e runs from vertex e to next[e].
 struct RingEdges {
   const std::vector<Point>* points = nullptr;
   std::vector<std::uint32_t> next;
   std::vector<EdgeBox> boxes;
-  EdgeBox bounds{};       ///< of all edges
-  double extent_sum = 0;  ///< of max(width, height) over the edges' boxes
+  EdgeBox bounds{};  ///< of all edges
 
   std::uint32_t size() const { return static_cast<std::uint32_t>(next.size()); }
   /// Whether edges e and f (any two) cross, overlap, or one passes through a vertex of the

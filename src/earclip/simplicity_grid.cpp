@@ -107,8 +107,7 @@ class CellSearch {
     double extent = 0;
     for (std::uint32_t e : list) {
       const EdgeBox& b = edges_.boxes[e];
-      fit = {std::min(fit.x0, b.x0), std::min(fit.y0, b.y0), std::max(fit.x1, b.x1),
-             std::max(fit.y1, b.y1)};
+      fit = merged(fit, b);
       extent += std::max(b.x1 - b.x0, b.y1 - b.y0);
     }
     if (level.frame.inv_w > 0) {  // within this cell (roughly: clamping keeps it exact)
