@@ -168,6 +168,26 @@ TEST(Simplicity, MethodsAgreeWithBruteForce) {
   EXPECT_GT(simple, 100);
 }
 
+/// Grids over boxes whose sizes overflow or underflow (the exact predicates' whole range), and
+/// a polygon mixing both: the grids must still miss no pair.
+TEST(Simplicity, ExtremeCoordinatesAgreeWithBruteForce) {
+  std::mt19937 rng(99);
+  const Contexts contexts;
+  for (int round = 0; round < 300; ++round) {
+    CleanPolygon polygon = random_polygon(rng, 2, 8, 6);
+    if (polygon.ring_count() == 0 || polygon.points.size() < 3) continue;
+    const double scale = round % 3 == 1 ? 0x1p-190 : 0x1p190;  // round % 3 == 2: holes tiny
+    for (std::size_t i = 0; i < polygon.points.size(); ++i) {
+      const bool tiny = round % 3 == 2 && i >= polygon.ring_starts[1];
+      polygon.points[i].x *= tiny ? 0x1p-190 : scale;
+      polygon.points[i].y *= tiny ? 0x1p-190 : scale;
+    }
+    SCOPED_TRACE("round " + std::to_string(round));
+    expect_agreement(polygon, contexts);
+    if (::testing::Test::HasFailure()) break;
+  }
+}
+
 TEST(Simplicity, SyntheticFamiliesAreSimpleByEveryMethod) {
   const Contexts contexts;
   for (std::string_view kind : generator_kinds()) {
