@@ -49,6 +49,8 @@ bool Engine::prepare(const FlatPolygon& input, bool check_simplicity, const Para
       boundary_.link(last, first);
     }
     unjoined = bridger_.join(clean_, boundary_);
+    touching_.untangle(boundary_);
+    cycles_ = touching_.cycles(boundary_, 0, unjoined);
   });
   for (std::uint32_t hole : unjoined) {
     diagnostics.push_back(locate(input, Issue::not_simple, boundary_.vertex[hole]));
@@ -59,15 +61,39 @@ bool Engine::prepare(const FlatPolygon& input, bool check_simplicity, const Para
 
 bool Engine::clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
                   TriangleList& out, std::uint32_t& best_effort_vertex) {
-  std::uint32_t rest = 0;
+  if (cycles_.empty()) return true;
+  bool complete = clip_main(algorithm, options, ctx, out, best_effort_vertex);
+  // Regions that touch the rest only at points (see touching.hpp): small, copied out so that
+  // each costs its own size, clipped sequentially.
+  for (std::size_t c = 1; c < cycles_.size(); ++c) {
+    part_.clear();
+    std::uint32_t v = cycles_[c];
+    do {
+      part_.add(boundary_.pos[v], boundary_.vertex[v]);
+      v = boundary_.next[v];
+    } while (v != cycles_[c]);
+    for (std::uint32_t i = 0; i + 1 < part_.size(); ++i) part_.link(i, i + 1);
+    part_.link(part_.size() - 1, 0);
+    if (!clipper_.run(part_, 0, options.heuristic, out) && complete) {
+      complete = false;
+      best_effort_vertex = clipper_.best_effort_vertex();
+    }
+  }
+  return complete;
+}
+
+bool Engine::clip_main(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+                       TriangleList& out, std::uint32_t& best_effort_vertex) {
+  const std::uint32_t entry = cycles_.front();
+  std::uint32_t rest = entry;
   switch (algorithm) {
     case Algorithm::divide_and_conquer:
-      return divide_and_conquer(boundary_, 0, ctx, out, best_effort_vertex);
+      return divide_and_conquer(boundary_, entry, ctx, out, best_effort_vertex);
     case Algorithm::partition_and_cut:
-      rest = partition_and_cut(boundary_, 0, ctx, out);
+      rest = partition_and_cut(boundary_, entry, ctx, out);
       break;
     case Algorithm::mark_and_cut:
-      rest = mark_and_cut(boundary_, 0, ctx, out);
+      rest = mark_and_cut(boundary_, entry, ctx, out);
       break;
     default:
       break;
@@ -102,8 +128,8 @@ Status Engine::triangulate(const FlatPolygon& input, const Options& options,
 EarStatistics Engine::statistics(const FlatPolygon& input) {
   std::vector<Diagnostic> ignored;
   Status status;
-  if (!prepare(input, false, ParallelContext{}, ignored, status)) return {};
-  return clipper_.statistics(boundary_, 0);
+  if (!prepare(input, false, ParallelContext{}, ignored, status) || cycles_.empty()) return {};
+  return clipper_.statistics(boundary_, cycles_.front());
 }
 
 }  // namespace pear::detail

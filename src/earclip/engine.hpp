@@ -8,6 +8,7 @@
 #include "clean.hpp"
 #include "ear_clipper.hpp"
 #include "simplicity.hpp"
+#include "touching.hpp"
 
 namespace pear::detail {
 
@@ -25,12 +26,18 @@ class Engine {
   /// Clips the prepared boundary with `algorithm`; false when a best-effort fallback acted.
   bool clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
             TriangleList& out, std::uint32_t& best_effort_vertex);
+  /// The algorithm on the first cycle, the sequential engine on what it leaves.
+  bool clip_main(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+                 TriangleList& out, std::uint32_t& best_effort_vertex);
   Diagnostic locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const;
 
   CleanPolygon clean_;
   Boundary boundary_;
   SimplicityCheck simplicity_;
   HoleBridger bridger_;
+  TouchingPoints touching_;
+  std::vector<std::uint32_t> cycles_;  ///< one node per region to clip, the main one first
+  Boundary part_;                      ///< a region copied out of boundary_
   EarClipper clipper_;
 };
 

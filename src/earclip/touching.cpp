@@ -1,0 +1,84 @@
+#include "touching.hpp"
+
+#include <algorithm>
+
+namespace pear::detail {
+namespace {
+
+/// 0 for directions in [0, 180) degrees, 1 for [180, 360), from exact coordinate comparisons.
+int half(const Point& centre, const Point& to) {
+  return to.y < centre.y || (to.y == centre.y && to.x < centre.x) ? 1 : 0;
+}
+
+}  // namespace
+
+void TouchingPoints::untangle(Boundary& b) {
+  order_.resize(b.size());
+  for (std::uint32_t u = 0; u < b.size(); ++u) order_[u] = u;
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t u, std::uint32_t v) {
+    return lexicographic_less(b.pos[u], b.pos[v]) || (b.pos[u] == b.pos[v] && u < v);
+  });
+  for (std::size_t i = 0; i < order_.size();) {
+    std::size_t j = i + 1;
+    while (j < order_.size() && b.pos[order_[j]] == b.pos[order_[i]]) ++j;
+    if (j - i >= 2) untangle_point(b, order_.data() + i, j - i);
+    i = j;
+  }
+}
+
+void TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count) {
+  const Point centre = b.pos[nodes[0]];
+  spokes_.clear();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t u = nodes[i];
+    if (b.pos[b.prev[u]] == centre || b.pos[b.next[u]] == centre) return;
+    spokes_.push_back({b.pos[b.prev[u]], u, false});
+    spokes_.push_back({b.pos[b.next[u]], u, true});
+  }
+  // Counterclockwise by direction, exactly: by half plane, then by orientation.
+  const auto before = [&](const Spoke& s, const Spoke& t) {
+    const int hs = half(centre, s.to), ht = half(centre, t.to);
+    if (hs != ht) return hs < ht;
+    return orient2d(centre, s.to, t.to) > 0;
+  };
+  std::sort(spokes_.begin(), spokes_.end(), before);
+  const std::size_t n = spokes_.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Spoke &s = spokes_[i], &t = spokes_[(i + 1) % n];
+    if (!before(s, t) && n > 1 && !before(t, s)) return;  // two edges overlap
+    if (s.out == t.out) return;  // not alternating: not a weakly simple crossing point
+  }
+  // A pass enters along an in-spoke and leaves along the out-spoke just before it
+  // counterclockwise: its interior wedge, from the out-spoke round to the in-spoke, is empty.
+  successor_.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (spokes_[i].out) continue;
+    const std::uint32_t leaving = spokes_[(i + n - 1) % n].node;
+    successor_.push_back(spokes_[i].node);
+    successor_.push_back(b.next[leaving]);
+  }
+  for (std::size_t i = 0; i < successor_.size(); i += 2) b.link(successor_[i], successor_[i + 1]);
+}
+
+std::vector<std::uint32_t> TouchingPoints::cycles(const Boundary& b, std::uint32_t first,
+                                                  const std::vector<std::uint32_t>& skip) {
+  seen_.assign(b.size(), 0);
+  const auto walk = [&](std::uint32_t start) {
+    std::size_t length = 0;
+    std::uint32_t v = start;
+    do {
+      seen_[v] = 1;
+      ++length;
+      v = b.next[v];
+    } while (v != start);
+    return length;
+  };
+  for (std::uint32_t hole : skip) walk(hole);
+  std::vector<std::uint32_t> entries;
+  if (!seen_[first] && walk(first) >= 3) entries.push_back(first);
+  for (std::uint32_t u = 0; u < b.size(); ++u)
+    if (!seen_[u] && walk(u) >= 3) entries.push_back(u);
+  return entries;
+}
+
+}  // namespace pear::detail

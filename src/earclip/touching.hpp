@@ -1,0 +1,41 @@
+// Points where the boundary passes more than once (holes touching the outer ring or each other
+// at several vertices, rings touching themselves in chains of lobes). The bridges join every
+// ring at one place; at its other touching points a ring may pass through in an order whose
+// interior wedges overlap (a figure eight as one ring). There the passes are relinked so that
+// each one's wedge holds no other edge; this can cut the boundary into several cycles, each a
+// region of its own (the arms of a plus sign whose centre is a hole).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "boundary.hpp"
+
+namespace pear::detail {
+
+class TouchingPoints {
+ public:
+  /// Relinks the passes at every point that several nodes share. Exact; leaves a point alone
+  /// when two of its edges overlap or its edges do not alternate in and out.
+  void untangle(Boundary& b);
+
+  /// One node of every cycle of `b` with at least three nodes, the cycle through `first` first;
+  /// nodes marked in `skip` (the cycles of holes that could not be joined) are left out.
+  std::vector<std::uint32_t> cycles(const Boundary& b, std::uint32_t first,
+                                    const std::vector<std::uint32_t>& skip);
+
+ private:
+  struct Spoke {
+    Point to;
+    std::uint32_t node;
+    bool out;
+  };
+  void untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
+
+  std::vector<std::uint32_t> order_;
+  std::vector<Spoke> spokes_;
+  std::vector<std::uint32_t> successor_;
+  std::vector<std::uint8_t> seen_;
+};
+
+}  // namespace pear::detail
