@@ -172,6 +172,8 @@ void write_geojson_polygons(std::ostream& stream, std::span<const Polygon> polyg
 
 void write_wkt(std::ostream& stream, std::span<const Polygon> polygons) {
   Sink out(stream);
+  // read_wkt needs at least one geometry; an empty one reads back as no polygons.
+  if (polygons.empty()) out << "POLYGON EMPTY\n";
   for (const Polygon& polygon : polygons) {
     if (polygon.empty()) {
       out << "POLYGON EMPTY\n";

@@ -260,4 +260,12 @@ TEST(ObjReader, NegativeIndicesAndSlashesAsOtherToolsWrite) {
   EXPECT_THROW(io::read_obj("v 0 0\nf 1 2 3\n"), io::ParseError);
 }
 
+// Found by fuzz/readers (corpus/fuzz/readers/crash-wkt-polygon-empty): "POLYGON EMPTY" reads as
+// no polygons, which write_wkt wrote as an empty text that read_wkt refuses.
+TEST(RoundTrip, WktOfNoPolygonsReadsBack) {
+  std::ostringstream out;
+  io::write_wkt(out, std::vector<Polygon>{});
+  EXPECT_TRUE(io::read_wkt(out.str()).empty());
+}
+
 }  // namespace
