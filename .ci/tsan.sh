@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs) and of the
-# parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads).
+# parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads) and the
+# parallel CDT's cases (flips in breadth-first sets, border rounds).
 # Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
 # The sanitizer build is separate: only the library and the scheduler tests are compiled.
 set -euo pipefail
@@ -20,10 +21,12 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/scheduler/scheduler_executor_test \
   tests/scheduler/scheduler_graph_test \
   tests/parallel/parallel_variants_test \
-  tests/parallel/divide_conquer_test
+  tests/parallel/divide_conquer_test \
+  tests/cdt/cdt_test
 
 # halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
 meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 "$build/tests/parallel/parallel_variants_test" --gtest_filter='Tricky.*'
 "$build/tests/parallel/divide_conquer_test" --gtest_filter='DivideAndConquer.*'
+"$build/tests/cdt/cdt_test" --gtest_filter='Cdt.*'
