@@ -25,7 +25,8 @@ def machine_text(m, context):
             f"{m.get('started', '?')} to {m.get('finished', '?')}. "
             f"Load average {load[0]} at the start and {load[1]} at the end: a shared VM on which "
             f"other agents were compiling, so absolute times carry noise of tens of percent and "
-            f"parallel runs lose threads to other processes; ratios within this run are steadier.")
+            f"parallel runs lose threads to other processes; ratios within this run are steadier."
+            + (f" Note: {m['notes']}" if m.get("notes") else ""))
 
 
 def largest_real(t):
