@@ -26,8 +26,12 @@ STYLE = {
 def save(fig, docs, name):
     out = os.path.join(docs, "figures")
     os.makedirs(out, exist_ok=True)
+    # No date and fixed element ids: the same data renders to the same files.
+    plt.rcParams["svg.hashsalt"] = "pear"
     for ext in ("svg", "png"):
-        fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=110, bbox_inches="tight")
+        metadata = {"Date": None} if ext == "svg" else {"Software": None}
+        fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=110, bbox_inches="tight",
+                    metadata=metadata)
     plt.close(fig)
     return f"figures/{name}.svg"
 
