@@ -186,7 +186,10 @@ EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {
   b_ = &b;
   classify(entry);
   EarStatistics stats;
-  std::uint32_t v = entry;
+  if (remaining_ < 3) return stats;
+  // Dissolving spikes may have removed `entry` itself (a hole that repeats the outer ring).
+  const std::uint32_t first = live(entry);
+  std::uint32_t v = first;
   do {
     ++stats.vertices;
     if (b.turn(v) > 0)
@@ -195,7 +198,7 @@ EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {
       ++stats.reflex;
     if (remaining_ > 3 && is_ear(v)) ++stats.ears;
     v = b.next[v];
-  } while (v != entry);
+  } while (v != first);
   if (remaining_ == 3) stats.ears = stats.convex;
   return stats;
 }

@@ -299,5 +299,18 @@ TEST_P(Engine, RingTouchingItselfInAChainOfThreeLobes) {
   expect_valid(Polygon{r}, GetParam(), "chain of lobes");
 }
 
+// Found by the benchmark's ear-prevalence run on earcut's empty-square.json: a hole that repeats
+// the outer ring dissolves completely as spikes, the statistics loop started from a removed node
+// and never returned.
+TEST(EarStatisticsRegression, HoleRepeatingTheOuterRingDoesNotHang) {
+  const Ring outer = {{0, 0}, {4000, 0}, {4000, 4000}, {0, 4000}};
+  const Ring hole = {{0, 0}, {0, 4000}, {4000, 4000}, {4000, 0}};
+  Triangulator triangulator;
+  const EarStatistics stats = triangulator.ear_statistics(Polygon{outer, hole});
+  EXPECT_EQ(stats.convex + stats.reflex, stats.vertices);
+  EXPECT_LE(stats.vertices, 8u);
+  EXPECT_LE(stats.ears, stats.convex);
+}
+
 }  // namespace
 }  // namespace pear
