@@ -6,7 +6,7 @@ packages=(meson ninja-build g++ pkg-config zlib1g-dev python3)
 if [[ "${1:-}" != minimal ]]; then
   packages+=(libgtest-dev libgmp-dev libbenchmark-dev libcgal-dev libgeos-dev libtbb-dev
              libglu1-mesa-dev python3-matplotlib
-             clang clang-format)
+             clang clang-format libclang-rt-14-dev)  # clang's libFuzzer and sanitizer runtimes
 fi
 missing=()
 for p in "${packages[@]}"; do
