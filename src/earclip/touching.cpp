@@ -41,12 +41,24 @@ void TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std
     if (hs != ht) return hs < ht;
     return orient2d(centre, s.to, t.to) > 0;
   };
-  std::sort(spokes_.begin(), spokes_.end(), before);
+  // Along one direction, a bridge's two copies: the pass that comes back from the hole is the
+  // clockwise one, so that the slit between them is outside. A spike tip's own two spokes go
+  // the other way round: its wedge is empty.
+  const auto order = [&](const Spoke& s, const Spoke& t) {
+    if (before(s, t)) return true;
+    if (before(t, s)) return false;
+    if (s.out == t.out) return s.node < t.node;
+    return s.node == t.node ? s.out : t.out;
+  };
+  std::sort(spokes_.begin(), spokes_.end(), order);
   const std::size_t n = spokes_.size();
   for (std::size_t i = 0; i < n; ++i) {
     const Spoke &s = spokes_[i], &t = spokes_[(i + 1) % n];
-    if (!before(s, t) && n > 1 && !before(t, s)) return;  // two edges overlap
     if (s.out == t.out) return;  // not alternating: not a weakly simple crossing point
+    const bool along = !before(s, t) && !before(t, s);
+    // Two spokes along one direction are a bridge (in, out) or a spike tip; more overlap.
+    const Spoke& u = spokes_[(i + 2) % n];
+    if (along && (s.out != (s.node == t.node) || (!before(t, u) && !before(u, t)))) return;
   }
   // A pass enters along an in-spoke and leaves along the out-spoke just before it
   // counterclockwise: its interior wedge, from the out-spoke round to the in-spoke, is empty.

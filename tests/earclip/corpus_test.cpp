@@ -9,7 +9,6 @@
 namespace pear {
 namespace {
 
-using testing::check_known_stuck;
 using testing::check_polygon;
 using testing::CorpusFile;
 using testing::list_corpus;
@@ -23,10 +22,7 @@ TEST_P(Corpus, TopAndFastAreValid) {
   for (const Polygon& polygon : polygons) {
     for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
       SCOPED_TRACE(h == EarHeuristic::top ? "top" : "fast");
-      if (testing::known_stuck(file.name))
-        check_known_stuck(polygon, Options{.heuristic = h});
-      else
-        check_polygon(polygon, file.valid, Options{.heuristic = h});
+      check_polygon(polygon, file.valid, Options{.heuristic = h});
     }
   }
 }

@@ -299,6 +299,22 @@ TEST_P(Engine, RingTouchingItselfInAChainOfThreeLobes) {
   expect_valid(Polygon{r}, GetParam(), "chain of lobes");
 }
 
+// Found in earcut's water-huge3 (1,443 holes): two holes touch at (3083, 948), and the bridges
+// of two other holes end there too. Each bridge's two copies run along one direction, which the
+// relinking at touching points took for overlapping edges, so it left the point tangled and
+// the clipper ended in the best effort (not_simple for a valid polygon).
+TEST_P(Engine, TwoBridgesEndAtAPointWhereHolesTouch) {
+  const Ring outer = {{3040, 900}, {3160, 900}, {3160, 990}, {3040, 990}};
+  const Polygon polygon = {outer,
+                           {{3099, 918}, {3079, 933}, {3067, 931}, {3082, 938}, {3083, 948}},
+                           {{3091, 967}, {3094, 978}, {3104, 973}},
+                           {{3083, 948}, {3071, 963}, {3076, 974}},
+                           {{3125, 932}, {3111, 948}, {3124, 943}},
+                           {{3055, 926}, {3057, 940}, {3067, 931}},
+                           {{3142, 919}, {3125, 928}, {3138, 931}}};
+  expect_valid(polygon, GetParam(), "bridges ending at a touching point");
+}
+
 // Found by the benchmark's ear-prevalence run on earcut's empty-square.json: a hole that repeats
 // the outer ring dissolves completely as spikes, the statistics loop started from a removed node
 // and never returned.

@@ -29,8 +29,7 @@ const char* name_of(Algorithm algorithm) {
 
 /// Every variant and setting is valid; the output depends on the partitions only. `large`
 /// inputs (coastlines up to 1.5M vertices) get the two settings that matter most.
-void check_variants(const Polygon& polygon, bool expect_valid, bool stuck = false,
-                    bool large = false) {
+void check_variants(const Polygon& polygon, bool expect_valid, bool large = false) {
   const std::vector<Setting> chosen =
       large ? std::vector<Setting>{{2, 2}, {8, 8}}
             : std::vector<Setting>(std::begin(settings), std::end(settings));
@@ -45,10 +44,6 @@ void check_variants(const Polygon& polygon, bool expect_valid, bool stuck = fals
                               .heuristic = heuristic,
                               .threads = s.threads,
                               .partitions = s.partitions};
-        if (stuck) {
-          testing::check_known_stuck(polygon, options);
-          continue;
-        }
         const auto triangles = check_polygon(polygon, expect_valid, options);
         if (s.threads == 1) continue;
         Options one_thread = options;
@@ -65,7 +60,7 @@ TEST_P(Corpus, EveryVariantIsValidAndDeterministic) {
   const CorpusFile& file = GetParam();
   const bool large = file.name.starts_with("coast/");
   for (const Polygon& polygon : testing::read_corpus_file(file))
-    check_variants(polygon, file.valid, testing::known_stuck(file.name), large);
+    check_variants(polygon, file.valid, large);
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, Corpus,

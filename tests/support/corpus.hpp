@@ -125,19 +125,6 @@ inline std::vector<std::array<std::uint32_t, 3>> check_polygon(const Polygon& po
   return std::move(result.triangles);
 }
 
-/// A valid input on which the engine still gets stuck (many holes touching each other and the
-/// outer ring in chains): it must say so with Status::not_simple rather than return a wrong
-/// triangulation silently. Known limitation, tracked in the closing note of the engine issue.
-inline bool known_stuck(const std::string& name) {
-  return name.ends_with("water-huge3.json");
-}
-
-inline void check_known_stuck(const Polygon& polygon, const Options& options) {
-  const auto result = triangulate(polygon, options);
-  const ValidationReport report = validate(polygon, result.triangles);
-  if (!report.valid) EXPECT_EQ(result.status, Status::not_simple);
-}
-
 /// The polygons of a corpus file (GeoJSON, possibly gzipped).
 inline std::vector<Polygon> read_corpus_file(const CorpusFile& file) {
   return io::read_text(slurp(file.path), io::Format::geojson, file.path.string(),
