@@ -151,14 +151,18 @@ class PolyReader {
   }
 
   void walk_rings() {
+    // Every vertex on exactly two segments first: then the segments form closed rings, and no
+    // walk below can reach a vertex with a missing neighbour.
+    for (std::size_t v = 0; v < points_.size(); ++v) {
+      const auto& slots = neighbours_[v];
+      if (slots[0] == no_vertex || slots[1] == no_vertex)
+        s_.fail(vertex_at_[v], "expected vertex " + std::to_string(v + base_) +
+                                   " on two segments (closed rings) but it is on " +
+                                   (slots[0] == no_vertex ? "none" : "only one"));
+    }
     std::vector<bool> visited(points_.size(), false);
     for (std::size_t start = 0; start < points_.size(); ++start) {
       if (visited[start]) continue;
-      const auto& slots = neighbours_[start];
-      if (slots[0] == no_vertex || slots[1] == no_vertex)
-        s_.fail(vertex_at_[start], "expected vertex " + std::to_string(start + base_) +
-                                       " on two segments (closed " + "rings) but it is on " +
-                                       (slots[0] == no_vertex ? "none" : "only one"));
       Ring& ring = rings_.emplace_back();
       std::size_t previous = no_vertex;
       std::size_t current = start;

@@ -189,6 +189,13 @@ TEST(PolyErrors, OpenChain) {
   poly_error("3 2 0 0\n0 0 0\n1 1 0\n2 0 1\n2 0\n0 0 1\n1 1 2\n0\n", 2, 1,
              "expected vertex 0 on two segments (closed rings) but it is on only one");
 }
+// Found by fuzz/readers (corpus/fuzz/readers/crash-poly-open-chain-after-closed-start): vertex 0
+// is on two segments, but the ring walked from it reaches vertex 3, on one only; the walk read
+// past its table (heap-buffer-overflow under ASan).
+TEST(PolyErrors, OpenChainReachedFromAVertexOnTwoSegments) {
+  poly_error("4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n3 0\n0 0 1\n1 0 2\n2 1 3\n0\n", 4, 1,
+             "expected vertex 2 on two segments (closed rings) but it is on only one");
+}
 TEST(PolyErrors, VertexOnThreeSegments) {
   poly_error("4 2 0 0\n0 0 0\n1 1 0\n2 0 1\n3 1 1\n4 0\n0 0 1\n1 1 2\n2 2 0\n3 0 3\n0\n", 10, 1,
              "vertex 0 is on a third one here");
