@@ -1,6 +1,7 @@
 #include "touching.hpp"
 
 #include <algorithm>
+#include <bit>
 
 namespace pear::detail {
 namespace {
@@ -13,8 +14,24 @@ int half(const Point& centre, const Point& to) {
 }  // namespace
 
 void TouchingPoints::untangle(Boundary& b) {
-  order_.resize(b.size());
-  for (std::uint32_t u = 0; u < b.size(); ++u) order_[u] = u;
+  // Most boundaries visit only a few points more than once (bridge ends, touching rings), so
+  // only the nodes whose position hashes to a slot another node shares are sorted.
+  const std::size_t table_bits = std::bit_width(std::max<std::size_t>(4 * b.size(), 2) - 1);
+  const auto slot = [&](const Point& p) {
+    // + 0.0 makes -0 and +0 (equal points) hash alike.
+    const std::uint64_t x = std::bit_cast<std::uint64_t>(p.x + 0.0);
+    const std::uint64_t y = std::bit_cast<std::uint64_t>(p.y + 0.0);
+    const std::uint64_t h = (x * 0x9e3779b97f4a7c15ull) ^ (y * 0xc2b2ae3d27d4eb4full);
+    return static_cast<std::size_t>((h ^ (h >> 29)) >> (64 - table_bits));
+  };
+  slot_count_.assign(std::size_t{1} << table_bits, 0);
+  for (std::uint32_t u = 0; u < b.size(); ++u) {
+    std::uint8_t& count = slot_count_[slot(b.pos[u])];
+    count = static_cast<std::uint8_t>(count < 2 ? count + 1 : 2);
+  }
+  order_.clear();
+  for (std::uint32_t u = 0; u < b.size(); ++u)
+    if (slot_count_[slot(b.pos[u])] >= 2) order_.push_back(u);
   std::sort(order_.begin(), order_.end(), [&](std::uint32_t u, std::uint32_t v) {
     return lexicographic_less(b.pos[u], b.pos[v]) || (b.pos[u] == b.pos[v] && u < v);
   });

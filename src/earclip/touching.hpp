@@ -32,6 +32,7 @@ class TouchingPoints {
   };
   void untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
 
+  std::vector<std::uint8_t> slot_count_;  ///< nodes per hash slot, saturating at 2
   std::vector<std::uint32_t> order_;
   std::vector<Spoke> spokes_;
   std::vector<std::uint32_t> successor_;
