@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -15,6 +16,7 @@ namespace pear::detail {
 
 struct GridFrame {
   double x0 = 0, y0 = 0, inv_w = 0, inv_h = 0;
+  double y_slack = 0;  ///< bounds the rounding of a row's band edges (y0 + r / inv_h)
   int nx = 1, ny = 1;
 
   /// About `target_cells` square-ish cells over [min, max].
@@ -22,6 +24,7 @@ struct GridFrame {
     x0 = min.x;
     y0 = min.y;
     const double w = max.x - min.x, h = max.y - min.y;
+    y_slack = 32 * std::numeric_limits<double>::epsilon() * (std::abs(min.y) + std::abs(max.y));
     const double cells = static_cast<double>(std::max<std::size_t>(1, target_cells));
     double side = std::sqrt(std::max(w * h, 0.0) / cells);
     if (!(side > 0)) side = std::max(w, h) / cells;
@@ -47,26 +50,29 @@ struct GridFrame {
   std::size_t cell_count() const { return static_cast<std::size_t>(nx) * ny; }
 
   /// Calls visit(first_cell, last_cell) for the cells of each row that triangle (a, b, c) may
-  /// touch: per row, only the columns the triangle spans within the row's band (plus one on each
-  /// side for rounding). Stops and returns true when visit does.
+  /// touch: per row, only the columns the triangle spans within the row's band. Rounding is
+  /// covered by slack, not by extra columns (three cells a row instead of one for a thin
+  /// triangle): the band is widened by y_slack, and x by a bound on the error of interpolating
+  /// an edge at an exact y (a few ulps of the largest |x|); column() is monotone, so every
+  /// point of the triangle lies in a visited cell. Stops and returns true when visit does.
   template <class VisitRow>
   bool any_row_span_of_triangle(const Point& a, const Point& b, const Point& c,
                                 VisitRow&& visit) const {
     const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
     const int r0 = row(lo_y), r1 = row(hi_y);
+    const double x_slack = 64 * std::numeric_limits<double>::epsilon() *
+                           std::max({std::abs(a.x), std::abs(b.x), std::abs(c.x)});
     for (int r = r0; r <= r1; ++r) {
       double band_lo = lo_y, band_hi = hi_y;
       if (r0 != r1 && inv_h > 0) {
-        band_lo = std::max(lo_y, y0 + r / inv_h);
-        band_hi = std::min(hi_y, y0 + (r + 1) / inv_h);
+        band_lo = std::max(lo_y, y0 + r / inv_h - y_slack);
+        band_hi = std::min(hi_y, y0 + (r + 1) / inv_h + y_slack);
       }
       double x_lo = INFINITY, x_hi = -INFINITY;
       for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
         clip_to_band(p, q, band_lo, band_hi, x_lo, x_hi);
       if (!(x_lo <= x_hi)) x_lo = std::min({a.x, b.x, c.x}), x_hi = std::max({a.x, b.x, c.x});
-      const int c0 = std::max(0, column(x_lo) - 1);
-      const int c1 = std::min(nx - 1, column(x_hi) + 1);
-      if (visit(cell(c0, r), cell(c1, r))) return true;
+      if (visit(cell(column(x_lo - x_slack), r), cell(column(x_hi + x_slack), r))) return true;
     }
     return false;
   }

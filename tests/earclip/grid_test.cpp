@@ -1,0 +1,106 @@
+// The uniform grid's triangle query (GridFrame::any_row_span_of_triangle) must visit the cell of
+// every point inside or on a triangle: the ear test relies on it to find every reflex vertex
+// that could block an ear. The row spans carry only a rounding slack, no extra columns, so
+// these tests aim at rounding: points exactly on row and column boundaries, triangles whose
+// edges pass through them, slivers, and coordinates far from the origin. Inside is decided by
+// the exact orient2d.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <set>
+#include <vector>
+
+#include "../../src/earclip/uniform_grid.hpp"
+#include "pear/predicates.hpp"
+
+namespace pear::detail {
+namespace {
+
+bool inside_or_on(const Point& a, const Point& b, const Point& c, const Point& p) {
+  return orient2d(a, b, p) >= 0 && orient2d(b, c, p) >= 0 && orient2d(c, a, p) >= 0;
+}
+
+/// Every point of `points` inside or on (a, b, c) lies in a cell the query visits.
+void expect_all_found(const GridFrame& frame, const std::vector<Point>& points, Point a, Point b,
+                      Point c) {
+  if (orient2d(a, b, c) < 0) std::swap(b, c);
+  std::set<std::size_t> visited;
+  frame.any_row_span_of_triangle(a, b, c, [&](std::size_t first, std::size_t last) {
+    for (std::size_t cell = first; cell <= last; ++cell) visited.insert(cell);
+    return false;
+  });
+  for (const Point& p : points) {
+    if (!inside_or_on(a, b, c, p)) continue;
+    const std::size_t cell = frame.cell(frame.column(p.x), frame.row(p.y));
+    ASSERT_TRUE(visited.count(cell))
+        << "point (" << p.x << ", " << p.y << ") in triangle (" << a.x << ", " << a.y << ") ("
+        << b.x << ", " << b.y << ") (" << c.x << ", " << c.y << ") not in a visited cell";
+  }
+}
+
+struct Case {
+  double scale, offset;
+};
+
+class GridQuery : public ::testing::TestWithParam<Case> {};
+
+// Points on a lattice whose lines are the grid's row and column boundaries (and thirds of
+// them), triangles with corners on the same lattice: edges run exactly through points, along
+// boundaries and across them at every slope, thin ones included.
+TEST_P(GridQuery, FindsEveryPointOfTrianglesOnTheBoundaryLattice) {
+  const auto [scale, offset] = GetParam();
+  const int lattice = 48;  // 16 cells a side, 3 lattice steps a cell
+  std::vector<Point> points;
+  for (int i = 0; i <= lattice; ++i)
+    for (int j = 0; j <= lattice; ++j)
+      points.push_back({offset + scale * i / 3.0, offset + scale * j / 3.0});
+  GridFrame frame;
+  frame.fit({offset, offset}, {offset + scale * 16, offset + scale * 16}, 256);
+  ASSERT_EQ(frame.nx, 16);
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> coordinate(0, lattice);
+  for (int k = 0; k < 3000; ++k) {
+    const auto corner = [&] {
+      return points[coordinate(random) * (lattice + 1) + coordinate(random)];
+    };
+    const Point a = corner(), b = corner(), c = corner();
+    if (orient2d(a, b, c) == 0) continue;
+    expect_all_found(frame, points, a, b, c);
+  }
+}
+
+// Slivers between random points: the thin triangles of a random star, whose row spans are one
+// cell wide.
+TEST_P(GridQuery, FindsEveryPointOfRandomSlivers) {
+  const auto [scale, offset] = GetParam();
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> unit(0, 1);
+  std::vector<Point> points;
+  for (int i = 0; i < 4000; ++i)
+    points.push_back({offset + scale * 16 * unit(random), offset + scale * 16 * unit(random)});
+  GridFrame frame;
+  frame.fit({offset, offset}, {offset + scale * 16, offset + scale * 16}, points.size() / 2);
+  std::uniform_int_distribution<std::size_t> pick(0, points.size() - 1);
+  for (int k = 0; k < 3000; ++k) {
+    const Point a = points[pick(random)], c = points[pick(random)];
+    // b close to the segment a-c: a sliver whose long edges pass near many points.
+    const double t = unit(random), lean = (unit(random) - 0.5) * 1e-3;
+    const Point b{a.x + t * (c.x - a.x) - lean * (c.y - a.y),
+                  a.y + t * (c.y - a.y) + lean * (c.x - a.x)};
+    if (orient2d(a, b, c) == 0) continue;
+    // Points exactly on the long edges too: the edge's own end points and midpoints of the lattice.
+    std::vector<Point> with_edges = points;
+    with_edges.push_back(a);
+    with_edges.push_back(b);
+    with_edges.push_back(c);
+    expect_all_found(frame, with_edges, a, b, c);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Magnitudes, GridQuery,
+                         ::testing::Values(Case{1, 0}, Case{1e-7, 0}, Case{0.1, 1e8},
+                                           Case{1e3, -1e9}, Case{3, 0.5}, Case{1e-3, 1e3}));
+
+}  // namespace
+}  // namespace pear::detail
