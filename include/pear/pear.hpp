@@ -40,7 +40,7 @@ enum class Algorithm : std::uint8_t {
 
 /// How the sequential engine chooses the next ear.
 enum class EarHeuristic : std::uint8_t {
-  top,   ///< priority queue: clip the ear closest to equilateral first (FIST's "top")
+  top,   ///< shortest diagonal weighted by shape first: near-CDT angles (see README)
   fast,  ///< clip the ear with the shortest diagonal first: cheaper key, small triangles
 };
 

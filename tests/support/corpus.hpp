@@ -100,9 +100,10 @@ inline std::vector<std::array<std::uint32_t, 3>> check_polygon(const Polygon& po
                                                                bool expect_valid,
                                                                const Options& options) {
   auto result = triangulate(polygon, options);
-  if (expect_valid)
+  if (expect_valid) {
     EXPECT_NE(result.status, Status::invalid_input)
         << (result.diagnostics.empty() ? "" : describe(result.diagnostics[0]));
+  }
   std::size_t n = 0;
   for (const Ring& ring : polygon) n += ring.size();
   for (const auto& t : result.triangles)
