@@ -41,7 +41,7 @@ enum class Algorithm : std::uint8_t {
 /// How the sequential engine chooses the next ear.
 enum class EarHeuristic : std::uint8_t {
   top,   ///< shortest diagonal weighted by shape first: near-CDT angles (see README)
-  fast,  ///< clip the ear with the shortest diagonal first: cheaper key, small triangles
+  fast,  ///< walk the boundary clipping ears as met (no queue): fastest, earcut-like angles
 };
 
 struct Options {

@@ -131,7 +131,6 @@ bool EarClipper::pop(std::uint32_t& v) {
 }
 
 void EarClipper::clip_ears(std::uint32_t entry) {
-  pending_.clear();
   anchor_ = entry;
   std::uint32_t last = entry;
   std::uint32_t v = entry;
@@ -177,9 +176,86 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   best_effort_ = false;
   split_budget_ = 4'000'000 + 64 * static_cast<std::size_t>(b.size());
   queue_.clear();
+  pending_.clear();
   classify(entry);
-  if (remaining_ >= 3) clip_ears(live(entry));
+  if (remaining_ < 3) return !best_effort_;
+  std::uint32_t start = live(entry);
+  // "fast" walks the boundary; where the walk does not pay (below), the queue takes over.
+  if (heuristic == EarHeuristic::top || !walk_ears(start)) clip_ears(start);
   return !best_effort_;
+}
+
+void EarClipper::enqueue_cycle(std::uint32_t entry) {
+  std::uint32_t v = entry;
+  do {
+    walk_.push_back(v);
+    v = b_->next[v];
+  } while (v != entry);
+}
+
+/// "fast": ears in boundary order, like a walk along the ring. After a clip the walk goes on at
+/// the next node, and the previous one joins the end of the walk: clipping stays local (the
+/// nodes and grid cells it touches are in cache; a bucket queue jumps across the polygon) and
+/// builds no fans (going back at once fans out from one vertex, quadratic on a comb). A node
+/// that failed is tested again only after its neighbourhood changed (stamp_), and once more in
+/// a last full pass before the fallback cascade, since a blocking reflex node may have left.
+/// Gives up, returning false with `entry` a live node, after 8 visits per node (a spiral or a
+/// Hilbert curve, whose ears come one per pass): the queue then finishes the cycle.
+bool EarClipper::walk_ears(std::uint32_t& entry) {
+  anchor_ = entry;
+  failed_.assign(b_->size(), 0);
+  std::size_t budget = 8 * remaining_ + 64;
+  for (;;) {
+    walk_.clear();
+    enqueue_cycle(anchor_);
+    std::size_t head = 0;
+    std::uint32_t up_next = UINT32_MAX;
+    bool recheck = false;
+    while (remaining_ > 3) {
+      if (budget-- == 0) {
+        entry = anchor_;
+        return false;
+      }
+      std::uint32_t v;
+      if (up_next != UINT32_MAX) {
+        v = up_next;
+        up_next = UINT32_MAX;
+      } else if (head < walk_.size()) {
+        v = walk_[head++];
+      } else if (!recheck) {
+        recheck = true;
+        walk_.clear();
+        head = 0;
+        enqueue_cycle(anchor_);
+        continue;
+      } else {
+        if (!fall_back(anchor_)) break;
+        recheck = false;
+        const std::uint32_t t = touched_;
+        for (std::uint32_t u : {b_->prev[t], t, b_->next[t]})
+          update_neighbour(u), walk_.push_back(u);
+        continue;
+      }
+      if (failed_.size() < b_->size()) failed_.resize(b_->size(), 0);  // copies from a split
+      if (!alive_[v] || (!recheck && failed_[v] == stamp_[v] + 1)) continue;
+      if (!is_ear(v)) {
+        failed_[v] = stamp_[v] + 1;
+        continue;
+      }
+      const std::uint32_t p = b_->prev[v], n = b_->next[v];
+      clip(v);
+      const std::uint32_t n_left = settle(n, false), p_left = settle(p, false);
+      up_next = n_left;
+      if (p_left != UINT32_MAX) walk_.push_back(p_left);
+      recheck = false;
+    }
+    if (remaining_ == 3) finish(anchor_);
+    if (pending_.empty()) return true;
+    const PendingCycle part = pending_.back();
+    pending_.pop_back();
+    remaining_ = part.nodes;
+    anchor_ = part.entry;
+  }
 }
 
 EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {

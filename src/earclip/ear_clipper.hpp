@@ -53,6 +53,8 @@ class EarClipper {
   std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
+  bool walk_ears(std::uint32_t& entry);
+  void enqueue_cycle(std::uint32_t entry);
 
   Boundary* b_ = nullptr;
   TriangleList* out_ = nullptr;
@@ -70,7 +72,9 @@ class EarClipper {
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint8_t> pinch_;  ///< shares its position with another node: always hashed
   std::vector<std::uint32_t> position_table_;
-  std::vector<std::uint32_t> stamp_;  ///< bumped when a node's ear status may have changed
+  std::vector<std::uint32_t> stamp_;   ///< bumped when a node's ear status may have changed
+  std::vector<std::uint32_t> failed_;  ///< stamp + 1 when the node last failed the ear test
+  std::vector<std::uint32_t> walk_;    ///< "fast": nodes to visit, in boundary order
   std::vector<std::uint32_t> scratch_;
   struct PendingCycle {
     std::uint32_t entry;

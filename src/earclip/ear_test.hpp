@@ -92,8 +92,9 @@ inline double ear_shape(const Boundary& b, std::uint32_t v) {
   return sides > 0 ? orient2d_inexact(a, t, c) / sides : 0;
 }
 
-/// The queue bucket of ear v. "fast": the squared length of the diagonal, so short diagonals go
-/// first, which keeps triangles and ear tests small. "top": the same length divided by the
+/// The queue bucket of ear v. "fast" (when its walk hands over, and in partition-and-cut's
+/// chains): the squared length of the diagonal, so short diagonals go first, which keeps
+/// triangles and ear tests small. "top": the same length divided by the
 /// fourth root of the ear's shape (1 equilateral .. 0 sliver), so a sliver waits until its
 /// diagonal is the short one among its peers. Measured on the corpus (3,022 polygons) this
 /// gives the CDT's average smallest angle (24.8 against 24.5 degrees) and less deviation from

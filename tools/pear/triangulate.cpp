@@ -42,8 +42,8 @@ options:
 %s  --threads N         threads for the parallel algorithms (default: all hardware threads)
   --partitions K      parts the parallel algorithms cut the work into (default: the thread
                       count); the output depends on K, never on the threads
-  --heuristic top|fast  ear order: shortest diagonal weighted by shape (top, default) or
-                      shortest diagonal (fast)
+  --heuristic top|fast  ear order: shortest diagonal weighted by shape (top, default), or
+                      a walk along the boundary (fast: quickest, thinner triangles)
   --cdt               make the triangulation constrained Delaunay (exact edge flips); with
                       --validate, every interior edge is checked to be locally Delaunay
   --validate          check every result with pear's independent validator
