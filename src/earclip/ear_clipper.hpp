@@ -75,6 +75,7 @@ class EarClipper {
   std::vector<std::uint32_t> stamp_;   ///< bumped when a node's ear status may have changed
   std::vector<std::uint32_t> failed_;  ///< stamp + 1 when the node last failed the ear test
   std::vector<std::uint32_t> walk_;    ///< "fast": nodes to visit, in boundary order
+  mutable std::size_t boxed_ = 0;      ///< hashed nodes met in ear tests' boxes (walk budget)
   std::vector<std::uint32_t> scratch_;
   struct PendingCycle {
     std::uint32_t entry;
