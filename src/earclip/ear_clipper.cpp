@@ -242,13 +242,13 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
         continue;
       } else {
         if (!fall_back(anchor_)) break;
+        failed_.resize(b_->size(), 0);  // a split adds copies of nodes
         recheck = false;
         const std::uint32_t t = touched_;
         for (std::uint32_t u : {b_->prev[t], t, b_->next[t]})
           update_neighbour(u), walk_.push_back(u);
         continue;
       }
-      if (failed_.size() < b_->size()) failed_.resize(b_->size(), 0);  // copies from a split
       if (!alive_[v] || (!recheck && failed_[v] == stamp_[v] + 1)) continue;
       if (!is_ear(v)) {
         failed_[v] = stamp_[v] + 1;
