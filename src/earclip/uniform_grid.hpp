@@ -59,43 +59,46 @@ struct GridFrame {
   bool any_row_span_of_triangle(const Point& a, const Point& b, const Point& c,
                                 VisitRow&& visit) const {
     const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
+    const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
+    const double x_slack =
+        64 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo_x), std::abs(hi_x));
     const int r0 = row(lo_y), r1 = row(hi_y);
-    const double x_slack = 64 * std::numeric_limits<double>::epsilon() *
-                           std::max({std::abs(a.x), std::abs(b.x), std::abs(c.x)});
+    if (r0 == r1 || !(inv_h > 0))  // most ears: one band, the box is the span
+      return visit(cell(column(lo_x - x_slack), r0), cell(column(hi_x + x_slack), r1));
+    const EdgeInBands edges[3] = {{a, b}, {b, c}, {c, a}};
     for (int r = r0; r <= r1; ++r) {
-      double band_lo = lo_y, band_hi = hi_y;
-      if (r0 != r1 && inv_h > 0) {
-        band_lo = std::max(lo_y, y0 + r / inv_h - y_slack);
-        band_hi = std::min(hi_y, y0 + (r + 1) / inv_h + y_slack);
-      }
+      const double band_lo = std::max(lo_y, y0 + r / inv_h - y_slack);
+      const double band_hi = std::min(hi_y, y0 + (r + 1) / inv_h + y_slack);
       double x_lo = INFINITY, x_hi = -INFINITY;
-      for (const auto& [p, q] : {std::pair{a, b}, std::pair{b, c}, std::pair{c, a}})
-        clip_to_band(p, q, band_lo, band_hi, x_lo, x_hi);
-      if (!(x_lo <= x_hi)) x_lo = std::min({a.x, b.x, c.x}), x_hi = std::max({a.x, b.x, c.x});
+      for (const EdgeInBands& edge : edges) edge.widen(band_lo, band_hi, x_lo, x_hi);
+      if (!(x_lo <= x_hi)) x_lo = lo_x, x_hi = hi_x;
       if (visit(cell(column(x_lo - x_slack), r), cell(column(x_hi + x_slack), r))) return true;
     }
     return false;
   }
 
-  /// Widens [x_lo, x_hi] by the x-range of segment p-q within y in [band_lo, band_hi].
-  static void clip_to_band(const Point& p, const Point& q, double band_lo, double band_hi,
-                           double& x_lo, double& x_hi) {
-    const double y_min = std::min(p.y, q.y), y_max = std::max(p.y, q.y);
-    if (y_max < band_lo || y_min > band_hi) return;
-    const auto x_at = [&](double y) {
-      if (p.y == q.y) return p.x;
-      const double t = std::clamp((y - p.y) / (q.y - p.y), 0.0, 1.0);
-      return p.x + t * (q.x - p.x);
-    };
-    if (p.y == q.y) {
-      x_lo = std::min({x_lo, p.x, q.x});
-      x_hi = std::max({x_hi, p.x, q.x});
-      return;
+  /// An edge prepared for clipping to many bands: its slope is divided out once.
+  struct EdgeInBands {
+    Point low, high;  ///< by y
+    double dx_dy;     ///< 0 for a horizontal edge
+    EdgeInBands(const Point& p, const Point& q)
+        : low(p.y <= q.y ? p : q),
+          high(p.y <= q.y ? q : p),
+          dx_dy(p.y == q.y ? 0 : (high.x - low.x) / (high.y - low.y)) {}
+    /// Widens [x_lo, x_hi] by the x-range of the edge within y in [band_lo, band_hi].
+    void widen(double band_lo, double band_hi, double& x_lo, double& x_hi) const {
+      if (high.y < band_lo || low.y > band_hi) return;
+      if (low.y == high.y) {
+        x_lo = std::min({x_lo, low.x, high.x});
+        x_hi = std::max({x_hi, low.x, high.x});
+        return;
+      }
+      const double xa = low.x + (std::max(band_lo, low.y) - low.y) * dx_dy;
+      const double xb = low.x + (std::min(band_hi, high.y) - low.y) * dx_dy;
+      x_lo = std::min({x_lo, xa, xb});
+      x_hi = std::max({x_hi, xa, xb});
     }
-    const double xa = x_at(std::max(band_lo, y_min)), xb = x_at(std::min(band_hi, y_max));
-    x_lo = std::min({x_lo, xa, xb});
-    x_hi = std::max({x_hi, xa, xb});
-  }
+  };
 
   /// Calls visit(cell) for every cell the segment a-c passes through, and for the neighbouring
   /// cell on each side in its row (a margin for rounding): every point of the segment lies in
