@@ -3,20 +3,6 @@
 #include <bit>
 
 namespace pear::detail {
-namespace {
-
-std::uint64_t position_hash(const Point& p) {
-  const std::uint64_t x = std::bit_cast<std::uint64_t>(p.x + 0.0);  // -0 and +0 alike
-  const std::uint64_t y = std::bit_cast<std::uint64_t>(p.y + 0.0);
-  // splitmix64's finalizer: integer coordinates have all-zero low mantissa bits, so the table
-  // index must depend on every bit.
-  std::uint64_t h = x ^ (y * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
-  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
-  h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
-  return h ^ (h >> 31);
-}
-
-}  // namespace
 
 void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
                   std::vector<std::uint8_t>& pinch, std::vector<std::uint32_t>& table) {

@@ -4,12 +4,24 @@
 // a corner).
 #pragma once
 
+#include <bit>
 #include <cstdint>
 #include <vector>
 
 #include "boundary.hpp"
 
 namespace pear::detail {
+
+/// A hash of a position that depends on every bit of both coordinates (splitmix64's finalizer):
+/// integer coordinates have all-zero low mantissa bits, and table indices take the low bits.
+inline std::uint64_t position_hash(const Point& p) {
+  const std::uint64_t x = std::bit_cast<std::uint64_t>(p.x + 0.0);  // -0 and +0 alike
+  const std::uint64_t y = std::bit_cast<std::uint64_t>(p.y + 0.0);
+  std::uint64_t h = x ^ (y * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
+  h = (h ^ (h >> 30)) * 0xBF58476D1CE4E5B9ull;
+  h = (h ^ (h >> 27)) * 0x94D049BB133111EBull;
+  return h ^ (h >> 31);
+}
 
 /// Sets pinch[u] for every live node u (alive[u] != 0) whose position another live node has;
 /// `live` is the number of live nodes, `table` scratch memory. Exact (hash on the coordinates).

@@ -1,7 +1,10 @@
 #include "touching.hpp"
 
+#include "pinches.hpp"
+
 #include <algorithm>
 #include <bit>
+#include <utility>
 
 namespace pear::detail {
 namespace {
@@ -15,7 +18,7 @@ int half(const Point& centre, const Point& to) {
 
 void TouchingPoints::untangle(Boundary& b) {
   // Most boundaries visit only a few points more than once (bridge ends, touching rings), so
-  // only the nodes whose position hashes to a slot another node shares are sorted.
+  // only the nodes whose position hashes to a slot another node shares are looked at again.
   const std::size_t table_bits = std::bit_width(std::max<std::size_t>(4 * b.size(), 2) - 1);
   const auto slot = [&](const Point& p) {
     // + 0.0 makes -0 and +0 (equal points) hash alike.
@@ -32,14 +35,35 @@ void TouchingPoints::untangle(Boundary& b) {
   order_.clear();
   for (std::uint32_t u = 0; u < b.size(); ++u)
     if (slot_count_[slot(b.pos[u])] >= 2) order_.push_back(u);
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t u, std::uint32_t v) {
-    return lexicographic_less(b.pos[u], b.pos[v]) || (b.pos[u] == b.pos[v] && u < v);
-  });
-  for (std::size_t i = 0; i < order_.size();) {
-    std::size_t j = i + 1;
-    while (j < order_.size() && b.pos[order_[j]] == b.pos[order_[i]]) ++j;
-    if (j - i >= 2) untangle_point(b, order_.data() + i, j - i);
-    i = j;
+  // The candidates grouped by position in an open-addressing table (another hash: they share
+  // slots of the first): same_[i] links the candidates at the position of order_[i]. Points
+  // are independent (relinking one changes no position another reads), so their order is free.
+  std::size_t capacity = 16;
+  while (capacity < 2 * order_.size()) capacity *= 2;
+  group_slots_.assign(capacity, UINT32_MAX);
+  same_.assign(order_.size(), UINT32_MAX);
+  heads_.clear();
+  for (std::uint32_t i = 0; i < order_.size(); ++i) {
+    const Point& at = b.pos[order_[i]];
+    for (std::size_t s = position_hash(at) & (capacity - 1);; s = (s + 1) & (capacity - 1)) {
+      const std::uint32_t k = group_slots_[s];
+      if (k == UINT32_MAX) {
+        group_slots_[s] = i;
+        heads_.push_back(i);
+        break;
+      }
+      if (b.pos[order_[k]] == at) {
+        same_[i] = std::exchange(same_[k], i);
+        break;
+      }
+    }
+  }
+  for (const std::uint32_t head : heads_) {
+    if (same_[head] == UINT32_MAX) continue;
+    group_.clear();
+    for (std::uint32_t k = head; k != UINT32_MAX; k = same_[k]) group_.push_back(order_[k]);
+    std::sort(group_.begin(), group_.end());
+    untangle_point(b, group_.data(), group_.size());
   }
 }
 

@@ -32,8 +32,12 @@ class TouchingPoints {
   };
   void untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
 
-  std::vector<std::uint8_t> slot_count_;  ///< nodes per hash slot, saturating at 2
-  std::vector<std::uint32_t> order_;
+  std::vector<std::uint8_t> slot_count_;    ///< nodes per hash slot, saturating at 2
+  std::vector<std::uint32_t> order_;        ///< nodes whose hash slot another node shares
+  std::vector<std::uint32_t> group_slots_;  ///< position -> a candidate there (index in order_)
+  std::vector<std::uint32_t> same_;         ///< the next candidate at the same position
+  std::vector<std::uint32_t> heads_;        ///< the first candidate at each position
+  std::vector<std::uint32_t> group_;
   std::vector<Spoke> spokes_;
   std::vector<std::uint32_t> successor_;
   std::vector<std::uint8_t> seen_;
