@@ -81,6 +81,13 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
     if (edges.conflict(subset[s], subset[t])) return std::min(subset[s], subset[t]);
     return std::nullopt;
   };
+  // Where a ring passes through a vertex, its edge ending there leaves the status and the next
+  // one enters at the same place: the entering edge is inserted with the leaving one's
+  // successor as a hint, in constant time instead of a search (std::set checks the hint and
+  // searches only when it is wrong).
+  Point left_at{};
+  auto hint = status.end();
+  bool hint_valid = false;
   for (const Event& event : sorted_events(segments)) {
     const std::uint32_t s = event.code / 2;
     if (event.code % 2) {  // removal: its neighbours meet
@@ -89,11 +96,16 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
       const bool has_below = it != status.begin();
       const auto under = has_below ? std::prev(it) : it;
       status.erase(it);
+      left_at = event.at;
+      hint = above;
+      hint_valid = true;
       if (has_below && above != status.end())
         if (const auto found = conflict(*under, *above)) return found;
       continue;
     }
-    const auto [it, inserted] = status.insert(s);
+    const bool hinted = hint_valid && left_at == event.at;
+    const auto it = hinted ? status.insert(hint, s) : status.insert(s).first;
+    hint_valid = false;
     if (status.key_comp().overlap != UINT32_MAX) return status.key_comp().overlap;
     place[s] = it;
     if (it != status.begin())
