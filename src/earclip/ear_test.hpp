@@ -34,19 +34,12 @@ inline bool coincident_blocks(const Boundary& b, std::uint32_t q, const Point& w
   return in_wedge(b.pos[b.prev[q]]) || in_wedge(b.pos[b.next[q]]);
 }
 
-/// Whether hashed node q spoils the ear (p, v, n). Strictly inside always does; on the
-/// triangle's boundary it does when its edges reach into the triangle (paper Fig. 1(b)).
+/// blocks() for q on the boundary of the ear's triangle (o1, o3: its orientation against the
+/// ear's sides a-t and c-a, both >= 0, one of the three orientations 0). Rare: kept out of line.
 template <class Links>
-bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_t v,
-            std::uint32_t n, std::uint32_t q) {
+bool blocks_on_boundary(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_t v,
+                        std::uint32_t n, std::uint32_t q, double o1, double o3) {
   const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n], &x = b.pos[q];
-  const double o1 = orient2d(a, t, x);
-  if (o1 < 0) return false;
-  const double o2 = orient2d(t, c, x);
-  if (o2 < 0) return false;
-  const double o3 = orient2d(c, a, x);
-  if (o3 < 0) return false;
-  if (o1 > 0 && o2 > 0 && o3 > 0) return true;
   if (o3 == 0 && x != a && x != c) return true;  // on the open diagonal
   if (!links.readable(q)) return true;
   if (x == a) return coincident_blocks(b, q, t, c);
@@ -55,6 +48,23 @@ bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_
   const Point &qp = b.pos[b.prev[q]], &qn = b.pos[b.next[q]];
   if (o1 == 0) return orient2d(a, t, qp) > 0 || orient2d(a, t, qn) > 0;
   return orient2d(t, c, qp) > 0 || orient2d(t, c, qn) > 0;
+}
+
+/// Whether hashed node q at x spoils the ear (p, v, n) with corners a, t, c. Strictly inside
+/// always does; on the triangle's boundary it does when its edges reach into the triangle
+/// (paper Fig. 1(b)). The common answers (outside, inside) are inline.
+template <class Links>
+inline bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::uint32_t v,
+                   std::uint32_t n, std::uint32_t q, const Point& a, const Point& t, const Point& c,
+                   const Point& x) {
+  const double o1 = orient2d(a, t, x);
+  if (o1 < 0) return false;
+  const double o2 = orient2d(t, c, x);
+  if (o2 < 0) return false;
+  const double o3 = orient2d(c, a, x);
+  if (o3 < 0) return false;
+  if (o1 > 0 && o2 > 0 && o3 > 0) return true;
+  return blocks_on_boundary(b, links, p, v, n, q, o1, o3);
 }
 
 /// Whether v is an ear: strictly convex, no boundary edge along its diagonal from one of the
@@ -76,7 +86,7 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
     const Point& x = e.pos;
     if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
     if (e.node == p || e.node == v || e.node == n) return false;
-    return blocks(b, links, p, v, n, e.node);
+    return blocks(b, links, p, v, n, e.node, a, t, c, x);
   });
 }
 
