@@ -26,15 +26,23 @@ bool ChainClipper::is_ear(std::uint32_t v) const {
   return detail::is_ear(*s_->b, OwnLinks{s_, chain_}, v, near);
 }
 
+/// Queues v if it may be clipped: convex, with neighbours of its own chain. The ear test waits
+/// until v is popped (see EarClipper::offer).
 void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
+  if (!own(b.prev[v]) || !own(b.next[v]) || !(b.turn(v) > 0)) return;
+  queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]});
+}
+
+/// Whether popped v is an ear this chain may clip now.
+bool ChainClipper::clippable(std::uint32_t v) const {
+  const Boundary& b = *s_->b;
   const std::uint32_t p = b.prev[v], n = b.next[v];
-  if (!own(p) || !own(n)) return;
+  if (!own(p) || !own(n)) return false;
   // Next to a spike that could not be dissolved (it reaches into another chain) the ear test's
   // argument does not hold; the sequential engine will dissolve it first.
-  if (b.pos[b.prev[p]] == b.pos[v] || b.pos[b.next[n]] == b.pos[v]) return;
-  if (!is_ear(v)) return;
-  queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]});
+  if (b.pos[b.prev[p]] == b.pos[v] || b.pos[b.next[n]] == b.pos[v]) return false;
+  return is_ear(v);
 }
 
 void ChainClipper::unhash(std::uint32_t v) {
@@ -99,7 +107,7 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
     const std::uint32_t v = top.node;
-    if (!s.alive[v] || s.stamp[v] != top.stamp) continue;
+    if (!s.alive[v] || s.stamp[v] != top.stamp || !clippable(v)) continue;
     const std::uint32_t p = b.prev[v], n = b.next[v];
     out.push_back({b.vertex[p], b.vertex[v], b.vertex[n]});
     remove(v);

@@ -27,6 +27,7 @@ class ChainClipper {
   bool own(std::uint32_t v) const { return s_->owner[v] == chain_; }
   bool is_ear(std::uint32_t v) const;
   void offer(std::uint32_t v);
+  bool clippable(std::uint32_t v) const;
   /// After v lost a neighbour: it may have stopped being strictly reflex.
   void update(std::uint32_t v);
   void unhash(std::uint32_t v);
