@@ -126,7 +126,7 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// at the pop clips the same ears in the same order with about half the tests.
 void EarClipper::offer(std::uint32_t v) {
   if (!(b_->turn(v) > 0)) return;
-  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]});
+  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]}, v / block_nodes);
 }
 
 /// The best queued node that is still current and an ear.
@@ -186,7 +186,9 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   heuristic_ = heuristic;
   best_effort_ = false;
   split_budget_ = 4'000'000 + 64 * static_cast<std::size_t>(b.size());
-  queue_.clear();
+  // Blocks of consecutive nodes (runs of the boundary) for the queue, on boundaries past the
+  // caches (see EarQueue::clear).
+  queue_.clear(b.size() >= 2 * block_nodes ? (b.size() + block_nodes - 1) / block_nodes : 1);
   pending_.clear();
   classify(entry);
   if (remaining_ < 3) return !best_effort_;

@@ -53,6 +53,7 @@ class EarClipper {
   std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
+  static constexpr std::uint32_t block_nodes = 32768;  ///< per queue block (EarQueue::clear)
   bool walk_ears(std::uint32_t& entry);
   void enqueue_cycle(std::uint32_t entry);
 

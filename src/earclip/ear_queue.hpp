@@ -19,27 +19,45 @@ class EarQueue {
   };
 
   static constexpr int bucket_count = 4096;
+  /// With blocks, keys are ordered in levels of 2^level_shift buckets: a level spans a factor
+  /// 2^(1/4) of squared length. (Coarser levels are faster on Eurasia still, but change the
+  /// order enough to thin the triangles of long corridors, a 100k spiral's by 28% at 16.)
+  static constexpr int level_shift = 2;
 
-  void clear() {
-    for (int word = 0; word < word_count; ++word) {
+  /// Empties the queue. With `blocks` > 1 it pops by key level first (2^level_shift buckets),
+  /// then by block (the caller's grouping of candidates by memory), then by bucket: on a
+  /// boundary larger than the caches, each level then sweeps memory block by block instead of
+  /// jumping across it at every pop.
+  void clear(std::uint32_t blocks = 1) {
+    for (std::size_t word = 0; word < occupied_.size(); ++word)
       for (std::uint64_t bits = occupied_[word]; bits != 0; bits &= bits - 1)
-        buckets_[word * 64 + std::countr_zero(bits)].clear();
-      occupied_[word] = 0;
-    }
-    lowest_word_ = word_count;
+        buckets_[word * 64 + static_cast<std::size_t>(std::countr_zero(bits))].clear();
+    blocks_ = std::max<std::uint32_t>(blocks, 1);
+    const std::size_t slots = std::size_t{bucket_count} * blocks_;
+    if (buckets_.size() < slots) buckets_.resize(slots);
+    occupied_.assign(slots / 64 + 1, 0);
+    lowest_word_ = occupied_.size();
   }
 
-  /// Bucket 0 is popped first.
-  void push(int bucket, Candidate candidate) {
-    buckets_[bucket].push_back(candidate);
-    occupied_[bucket / 64] |= std::uint64_t{1} << (bucket % 64);
-    lowest_word_ = std::min(lowest_word_, bucket / 64);
+  /// Bucket 0 is popped first; `block` counts only with blocks (those past the last given to
+  /// clear join the last).
+  void push(int bucket, Candidate candidate, std::uint32_t block = 0) {
+    if (occupied_.empty()) clear();
+    constexpr int fine = (1 << level_shift) - 1;
+    const std::size_t slot =
+        ((static_cast<std::size_t>(bucket >> level_shift) * blocks_ + std::min(block, blocks_ - 1))
+         << level_shift) +
+        static_cast<std::size_t>(bucket & fine);
+    buckets_[slot].push_back(candidate);
+    occupied_[slot / 64] |= std::uint64_t{1} << (slot % 64);
+    lowest_word_ = std::min(lowest_word_, slot / 64);
   }
 
   bool pop(Candidate& out) {
-    for (int word = lowest_word_; word < word_count; lowest_word_ = ++word) {
+    for (std::size_t word = lowest_word_; word < occupied_.size(); lowest_word_ = ++word) {
       if (occupied_[word] == 0) continue;
-      const int bucket = word * 64 + std::countr_zero(occupied_[word]);
+      const std::size_t bucket =
+          word * 64 + static_cast<std::size_t>(std::countr_zero(occupied_[word]));
       out = buckets_[bucket].back();
       buckets_[bucket].pop_back();
       if (buckets_[bucket].empty()) occupied_[word] &= ~(std::uint64_t{1} << (bucket % 64));
@@ -65,10 +83,10 @@ class EarQueue {
   }
 
  private:
-  static constexpr int word_count = bucket_count / 64;
-  std::vector<Candidate> buckets_[bucket_count];
-  std::uint64_t occupied_[word_count] = {};
-  int lowest_word_ = word_count;  ///< no occupied bucket below this word's
+  std::vector<std::vector<Candidate>> buckets_;
+  std::vector<std::uint64_t> occupied_;
+  std::uint32_t blocks_ = 1;
+  std::size_t lowest_word_ = 0;  ///< no occupied bucket below this word's
 };
 
 }  // namespace pear::detail

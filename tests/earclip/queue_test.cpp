@@ -6,7 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "../../src/earclip/ear_queue.hpp"
@@ -83,6 +85,46 @@ TEST(EarQueue, PopsInBucketOrderAndLastInFirstOutWithinABucket) {
       ASSERT_FALSE(queue.pop(got));
     }
   }
+}
+
+// With blocks: by key level (2^level_shift buckets), then block, then bucket, last in first
+// out; blocks past the last count as the last.
+TEST(EarQueue, WithBlocksPopsByLevelThenBlockThenBucket) {
+  constexpr std::uint32_t blocks = 5;
+  EarQueue queue;
+  queue.clear(blocks);
+  const auto key = [](int bucket, std::uint32_t block) {
+    return std::tuple(bucket >> EarQueue::level_shift, std::min(block, blocks - 1),
+                      bucket & ((1 << EarQueue::level_shift) - 1));
+  };
+  std::map<std::tuple<int, std::uint32_t, int>, std::vector<std::uint32_t>> reference;
+  std::mt19937 random(13);
+  std::uniform_int_distribution<int> bucket(0, 300), coin(0, 2);
+  std::uniform_int_distribution<std::uint32_t> block(0, blocks + 1);
+  std::uint32_t next_node = 0;
+  for (int step = 0; step < 30000; ++step) {
+    if (coin(random) != 0) {
+      const int b = bucket(random);
+      const std::uint32_t k = block(random);
+      queue.push(b, {next_node, 0}, k);
+      reference[key(b, k)].push_back(next_node++);
+      continue;
+    }
+    EarQueue::Candidate got;
+    ASSERT_EQ(queue.pop(got), !reference.empty());
+    if (reference.empty()) continue;
+    const auto lowest = reference.begin();
+    ASSERT_EQ(got.node, lowest->second.back());
+    lowest->second.pop_back();
+    if (lowest->second.empty()) reference.erase(lowest);
+  }
+  // Back to one block: plain bucket order again.
+  queue.clear();
+  queue.push(7, {1, 0}, 3);
+  queue.push(5, {2, 0}, 0);
+  EarQueue::Candidate got;
+  ASSERT_TRUE(queue.pop(got));
+  EXPECT_EQ(got.node, 2u);
 }
 
 }  // namespace
