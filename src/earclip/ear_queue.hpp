@@ -24,6 +24,8 @@ class EarQueue {
   /// order enough to thin the triangles of long corridors, a 100k spiral's by 28% at 16.)
   static constexpr int level_shift = 2;
 
+  EarQueue() { clear(); }
+
   /// Empties the queue. With `blocks` > 1 it pops by key level first (2^level_shift buckets),
   /// then by block (the caller's grouping of candidates by memory), then by bucket: on a
   /// boundary larger than the caches, each level then sweeps memory block by block instead of
@@ -42,7 +44,6 @@ class EarQueue {
   /// Bucket 0 is popped first; `block` counts only with blocks (those past the last given to
   /// clear join the last).
   void push(int bucket, Candidate candidate, std::uint32_t block = 0) {
-    if (occupied_.empty()) clear();
     constexpr int fine = (1 << level_shift) - 1;
     const std::size_t slot =
         ((static_cast<std::size_t>(bucket >> level_shift) * blocks_ + std::min(block, blocks_ - 1))

@@ -1,7 +1,5 @@
 #include "pinches.hpp"
 
-#include <bit>
-
 namespace pear::detail {
 
 void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,

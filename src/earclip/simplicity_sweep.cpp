@@ -85,9 +85,8 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
   // one enters at the same place: the entering edge is inserted with the leaving one's
   // successor as a hint, in constant time instead of a search (std::set checks the hint and
   // searches only when it is wrong).
-  Point left_at{};
+  Point left_at{};  // where the last edge left; an erase always renews the hint, so it is live
   auto hint = status.end();
-  bool hint_valid = false;
   for (const Event& event : sorted_events(segments)) {
     const std::uint32_t s = event.code / 2;
     if (event.code % 2) {  // removal: its neighbours meet
@@ -98,14 +97,11 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
       status.erase(it);
       left_at = event.at;
       hint = above;
-      hint_valid = true;
       if (has_below && above != status.end())
         if (const auto found = conflict(*under, *above)) return found;
       continue;
     }
-    const bool hinted = hint_valid && left_at == event.at;
-    const auto it = hinted ? status.insert(hint, s) : status.insert(s).first;
-    hint_valid = false;
+    const auto it = left_at == event.at ? status.insert(hint, s) : status.insert(s).first;
     if (status.key_comp().overlap != UINT32_MAX) return status.key_comp().overlap;
     place[s] = it;
     if (it != status.begin())

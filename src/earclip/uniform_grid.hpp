@@ -63,7 +63,7 @@ struct GridFrame {
     const double x_slack =
         64 * std::numeric_limits<double>::epsilon() * std::max(std::abs(lo_x), std::abs(hi_x));
     const int r0 = row(lo_y), r1 = row(hi_y);
-    if (r0 == r1 || !(inv_h > 0))  // most ears: one band, the box is the span
+    if (r0 == r1)  // most ears: one band, the box is the span (always so when inv_h is 0)
       return visit(cell(column(lo_x - x_slack), r0), cell(column(hi_x + x_slack), r1));
     const EdgeInBands edges[3] = {{a, b}, {b, c}, {c, a}};
     for (int r = r0; r <= r1; ++r) {
