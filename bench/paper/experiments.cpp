@@ -208,13 +208,11 @@ void quality_of(Json& out, const pear::Polygon& polygon, const QualityConfig& co
   const auto result = pear::triangulate(polygon, options);
   out.begin_object().field("config", config.name).field("status", pear::to_string(result.status));
   if (result.status == pear::Status::ok) {
-    pear::detail::FlatPolygon flat;
-    pear::detail::flatten(polygon, flat);
-    const pear::QualityStatistics q = pear::quality(flat.points, result.triangles);
+    const pear::QualityStatistics q = pear::quality(polygon, result.triangles);
     pear::ValidateOptions check;
     check.check_delaunay = options.delaunay;
     check.max_messages = 0;
-    out.field("valid", pear::validate(flat, result.triangles, check).valid);
+    out.field("valid", pear::validate(polygon, result.triangles, check).valid);
     out.field("triangles", q.triangles).field("dev60", q.dev60_avg_deg);
     out.field("min_angle", q.min_angle_avg_deg);
     const pear::DelaunayStatistics& d = result.delaunay;

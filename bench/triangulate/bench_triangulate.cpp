@@ -37,8 +37,10 @@ namespace {
 struct LoadedInput {
   std::string name;
   pear::Polygon polygon;
-  pear::detail::FlatPolygon flat;
+  std::vector<pear::Point> points;  ///< ring after ring, as pear numbers them
+  std::vector<std::uint32_t> ring_offsets;
   std::size_t holes = 0;
+  pear::PolygonView view() const { return {points, ring_offsets}; }
 };
 
 const LoadedInput& load(const Input& input) {
@@ -47,7 +49,11 @@ const LoadedInput& load(const Input& input) {
     loaded = {};
     loaded.polygon = input.load();
     loaded.holes = loaded.polygon.empty() ? 0 : loaded.polygon.size() - 1;
-    pear::detail::flatten(loaded.polygon, loaded.flat);
+    loaded.ring_offsets.push_back(0);
+    for (const pear::Ring& ring : loaded.polygon) {
+      loaded.points.insert(loaded.points.end(), ring.begin(), ring.end());
+      loaded.ring_offsets.push_back(static_cast<std::uint32_t>(loaded.points.size()));
+    }
     loaded.name = input.name;
   }
   return loaded;
@@ -66,13 +72,13 @@ void set_result_counters(benchmark::State& state, const std::string& label,
                          const LoadedInput& input, const Triangulator& triangulator,
                          std::size_t triangles, const FirstRun& first) {
   const Triangles& result = first.result;
-  const auto n = static_cast<double>(input.flat.points.size());
-  const pear::QualityStatistics quality = pear::quality(input.flat.points, result);
+  const auto n = static_cast<double>(input.points.size());
+  const pear::QualityStatistics quality = pear::quality(input.points, result);
   pear::ValidateOptions options;
   options.max_messages = 1;
   // The CDT triangulators must also pass the exact empty-circle check.
   options.check_delaunay = triangulator.name.find("cdt") != std::string::npos;
-  const pear::ValidationReport report = pear::validate(input.flat, result, options);
+  const pear::ValidationReport report = pear::validate(input.view(), result, options);
   if (!report.valid && !report.messages.empty())
     std::fprintf(stderr, "%s: %s\n", label.c_str(), report.messages[0].c_str());
   using benchmark::Counter;
@@ -135,7 +141,7 @@ void run(benchmark::State& state, const Input& input, const Triangulator& triang
   const std::string label = input.name + "/" + triangulator.name;
   try {
     const LoadedInput& loaded = load(input);
-    const auto vertices = static_cast<double>(loaded.flat.points.size());
+    const auto vertices = static_cast<double>(loaded.points.size());
     const std::string family = family_of(input, triangulator.name);
     auto found = first_runs.find(label);
     // The cap is for quadratic peers; pear itself is always measured.

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "pear/export.hpp"
+
 namespace pear {
 
 /// A point in the plane. An aggregate, so `Point{1.0, 2.0}` works.
@@ -108,10 +110,10 @@ struct Diagnostic {
 };
 
 /// Short machine-readable name of a status ("ok", "not_simple", ...).
-const char* to_string(Status status);
+PEAR_API const char* to_string(Status status);
 /// Short machine-readable name of an issue.
-const char* to_string(Issue issue);
+PEAR_API const char* to_string(Issue issue);
 /// A sentence for people: "ring 2, vertex 17: coordinate is NaN or infinite".
-std::string describe(const Diagnostic& diagnostic);
+PEAR_API std::string describe(const Diagnostic& diagnostic);
 
 }  // namespace pear

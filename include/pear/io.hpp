@@ -26,13 +26,14 @@
 #include <string_view>
 #include <vector>
 
+#include "pear/export.hpp"
 #include "pear/geometry.hpp"
 
 namespace pear::io {
 
 /// Thrown by every reader. what() is "FILE:LINE:COL: expected X but found Y"; line and column
 /// count from 1, the column in bytes. offset is the byte offset of the problem in the text.
-class ParseError : public std::runtime_error {
+class PEAR_API ParseError : public std::runtime_error {
  public:
   ParseError(std::string file, std::size_t line, std::size_t column, std::size_t offset,
              std::string detail);
@@ -64,30 +65,32 @@ struct ReadOptions {
 /// an empty Polygon and a Feature with a null geometry give none. Positions may carry a third
 /// (altitude) number, which is ignored; other geometry types are a ParseError.
 /// `name` is the file name used in error messages.
-std::vector<Polygon> read_geojson(std::string_view text, std::string_view name = "<geojson>",
-                                  const ReadOptions& options = {});
+PEAR_API std::vector<Polygon> read_geojson(std::string_view text,
+                                           std::string_view name = "<geojson>",
+                                           const ReadOptions& options = {});
 
 /// One or more WKT geometries separated by white space: POLYGON, MULTIPOLYGON (with optional
 /// Z, M or ZM, extra ordinates ignored) or their EMPTY forms. Keywords are case-insensitive.
-std::vector<Polygon> read_wkt(std::string_view text, std::string_view name = "<wkt>",
-                              const ReadOptions& options = {});
+PEAR_API std::vector<Polygon> read_wkt(std::string_view text, std::string_view name = "<wkt>",
+                                       const ReadOptions& options = {});
 
 /// Triangle's .poly: vertices, segments, hole points (and optional regional attributes). The
 /// segments must form closed rings (each vertex on exactly two segments). Rings nest even-odd:
 /// a ring inside an odd number of others is a hole of the innermost; every other ring starts a
 /// polygon. A hole point that lies inside a polygon's filled area contradicts that reading and
 /// is a ParseError.
-std::vector<Polygon> read_poly(std::string_view text, std::string_view name = "<poly>",
-                               const ReadOptions& options = {});
+PEAR_API std::vector<Polygon> read_poly(std::string_view text, std::string_view name = "<poly>",
+                                        const ReadOptions& options = {});
 
 /// Reads by format. read_file picks the format from the extension (.json, .geojson, .wkt,
 /// .poly) or, failing that, from the first non-blank character. Throws ParseError, also for a
 /// file that cannot be opened (line 0).
-std::vector<Polygon> read_text(std::string_view text, Format format, std::string_view name,
-                               const ReadOptions& options = {});
-std::vector<Polygon> read_file(const std::filesystem::path& path, const ReadOptions& options = {});
+PEAR_API std::vector<Polygon> read_text(std::string_view text, Format format, std::string_view name,
+                                        const ReadOptions& options = {});
+PEAR_API std::vector<Polygon> read_file(const std::filesystem::path& path,
+                                        const ReadOptions& options = {});
 /// The format read_file would use for this name and content.
-Format guess_format(std::string_view name, std::string_view text);
+PEAR_API Format guess_format(std::string_view name, std::string_view text);
 
 /// A triangle mesh: points and counterclockwise index triples into them.
 struct Mesh {
@@ -97,10 +100,10 @@ struct Mesh {
 
 /// Reads `v x y [z]` and `f a b c` lines of an OBJ file (1-based or negative indices; only
 /// triangles; other statements ignored). For comparing with other tools and for round trips.
-Mesh read_obj(std::string_view text, std::string_view name = "<obj>");
+PEAR_API Mesh read_obj(std::string_view text, std::string_view name = "<obj>");
 /// Reads Triangle's .node and .ele pair (0- or 1-based numbering, as the .node file starts).
-Mesh read_node_ele(std::string_view node_text, std::string_view ele_text,
-                   std::string_view name = "<node/ele>");
+PEAR_API Mesh read_node_ele(std::string_view node_text, std::string_view ele_text,
+                            std::string_view name = "<node/ele>");
 
 /// One triangulated polygon for the writers: its rings (as read) and triangles indexing its
 /// points ring after ring. `part` is empty or has one entry per triangle: the thread or
@@ -112,12 +115,12 @@ struct TriangulatedPolygon {
 };
 
 /// OBJ: `v x y 0` for every point, `f a b c` (1-based) for every triangle, one `o` per polygon.
-void write_obj(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
+PEAR_API void write_obj(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
 /// GeoJSON FeatureCollection: one Feature per polygon, its geometry a MultiPolygon of triangles.
-void write_geojson(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
+PEAR_API void write_geojson(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
 /// Triangle's .node (all points, numbered from 0) and .ele (triangles) pair.
-void write_node_ele(std::ostream& node, std::ostream& ele,
-                    std::span<const TriangulatedPolygon> polygons);
+PEAR_API void write_node_ele(std::ostream& node, std::ostream& ele,
+                             std::span<const TriangulatedPolygon> polygons);
 
 struct SvgOptions {
   double size = 1000;      ///< the longer side of the picture, in pixels
@@ -125,18 +128,18 @@ struct SvgOptions {
   std::string title = {};  ///< shown in the picture's corner when not empty
 };
 /// A picture of the polygons (holes visible) and their triangles, y up, fitted to the viewport.
-void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
-               const SvgOptions& options = {});
+PEAR_API void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
+                        const SvgOptions& options = {});
 
 /// Polygons as GeoJSON (one Polygon, or a MultiPolygon for several; rings written closed), as
 /// WKT (one POLYGON per line) or as a .poly file: inputs for pear and for other tools.
-void write_geojson_polygons(std::ostream& out, std::span<const Polygon> polygons);
-void write_wkt(std::ostream& out, std::span<const Polygon> polygons);
+PEAR_API void write_geojson_polygons(std::ostream& out, std::span<const Polygon> polygons);
+PEAR_API void write_wkt(std::ostream& out, std::span<const Polygon> polygons);
 /// Writes a hole point inside each hole; throws std::invalid_argument if a hole has no interior
 /// point that can be found (a ring with zero area).
-void write_poly(std::ostream& out, std::span<const Polygon> polygons);
+PEAR_API void write_poly(std::ostream& out, std::span<const Polygon> polygons);
 
 /// The shortest decimal text that reads back to exactly `value`.
-std::string format_double(double value);
+PEAR_API std::string format_double(double value);
 
 }  // namespace pear::io

@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "pear/detail/flat_polygon.hpp"
+#include "pear/export.hpp"
 #include "pear/geometry.hpp"
 
 namespace pear {
@@ -70,7 +72,7 @@ struct Options {
 
 /// Per-phase task times of one run, for work/span analysis: a phase's tasks run in parallel,
 /// phases run one after another. Sequential phases have one task.
-struct RunProfile {
+struct PEAR_API RunProfile {
   struct Phase {
     std::string name;
     std::vector<double> task_seconds;
@@ -109,40 +111,22 @@ struct Triangulation {
   DelaunayStatistics delaunay;  ///< filled when Options::delaunay was set
 };
 
-namespace detail {
-/// The polygon as the engine sees it: all points in input order, ring after ring.
-struct FlatPolygon {
-  std::vector<Point> points;
-  std::vector<std::uint32_t> ring_starts;  ///< ring r is [ring_starts[r], ring_starts[r+1])
-  void clear() {
-    points.clear();
-    ring_starts.clear();
-  }
+/// One polygon as flat arrays, the layout of GeoArrow and shapely's `to_ragged_array`: its
+/// points ring after ring (outer first), ring r being points [ring_offsets[r], ring_offsets[r+1]).
+/// So ring_offsets has one entry more than there are rings, starts at 0 and ends at
+/// points.size(). Triangles and diagnostics index `points`.
+struct PolygonView {
+  std::span<const Point> points;
+  std::span<const std::uint32_t> ring_offsets;
 };
 
-/// Copies any ring range into a FlatPolygon. Returns false when the count exceeds 2^32 - 2.
-template <ring_range Rings>
-bool flatten(const Rings& rings, FlatPolygon& flat) {
-  flat.clear();
-  std::size_t total = 0;
-  for (const auto& ring : rings) {
-    flat.ring_starts.push_back(static_cast<std::uint32_t>(total));
-    for (const auto& p : ring) {
-      using P = std::remove_cvref_t<decltype(p)>;
-      if (++total >= std::numeric_limits<std::uint32_t>::max()) return false;
-      flat.points.push_back(Point{point_traits<P>::x(p), point_traits<P>::y(p)});
-    }
-  }
-  flat.ring_starts.push_back(static_cast<std::uint32_t>(total));
-  return true;
-}
-
+namespace detail {
 class Engine;
 }  // namespace detail
 
 /// A reusable triangulator: keeps its buffers between calls, so many small polygons are cheap.
 /// Not thread-safe; use one per thread.
-class Triangulator {
+class PEAR_API Triangulator {
  public:
   Triangulator();
   ~Triangulator();

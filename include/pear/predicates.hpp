@@ -2,6 +2,7 @@
 // paper "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates", 1997).
 #pragma once
 
+#include "pear/export.hpp"
 #include "pear/geometry.hpp"
 
 namespace pear {
@@ -10,7 +11,7 @@ namespace detail {
 /// Stage A's error bound, (3 + 16e)e with e = 2^-53 (Shewchuk 1997, section 4.3).
 inline constexpr double orient2d_filter_bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
 /// Stages B to D, for the near-collinear inputs the filter cannot decide.
-double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum);
+PEAR_API double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum);
 }  // namespace detail
 
 /// Twice the signed area of triangle (a, b, c), with the sign exactly right: positive if a, b, c
@@ -30,7 +31,7 @@ inline double orient2d(const Point& a, const Point& b, const Point& c) {
 
 /// For a, b, c in counterclockwise order: positive if d lies inside their circumcircle, negative
 /// if outside, zero if on it. The sign is exact on the same domain as orient2d.
-double incircle(const Point& a, const Point& b, const Point& c, const Point& d);
+PEAR_API double incircle(const Point& a, const Point& b, const Point& c, const Point& d);
 
 /// The plain floating-point orientation determinant, no guarantee on its sign. For quick
 /// rejections where an error is harmless; never for decisions.

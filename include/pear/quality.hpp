@@ -4,7 +4,10 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <vector>
 
+#include "pear/detail/flat_polygon.hpp"
+#include "pear/export.hpp"
 #include "pear/geometry.hpp"
 
 namespace pear {
@@ -17,7 +20,20 @@ struct QualityStatistics {
   std::array<std::size_t, 12> min_angle_histogram{};  ///< bins of 5°: [0,5), [5,10), ... [55,60]
 };
 
-QualityStatistics quality(std::span<const Point> points,
-                          std::span<const std::array<std::uint32_t, 3>> triangles);
+/// Angle statistics of `triangles`, index triples into `points`.
+PEAR_API QualityStatistics quality(std::span<const Point> points,
+                                   std::span<const std::array<std::uint32_t, 3>> triangles);
+
+/// Same for a polygon given as rings (triangles number its points ring after ring, as
+/// pear::triangulate's do) and any index type.
+template <ring_range Rings, class Index>
+QualityStatistics quality(const Rings& rings, const std::vector<std::array<Index, 3>>& triangles) {
+  detail::FlatPolygon flat;
+  detail::flatten(rings, flat);
+  std::vector<std::array<std::uint32_t, 3>> wide(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (int k = 0; k < 3; ++k) wide[t][k] = static_cast<std::uint32_t>(triangles[t][k]);
+  return quality(std::span<const Point>(flat.points), wide);
+}
 
 }  // namespace pear

@@ -41,95 +41,18 @@
 #include <utility>
 #include <vector>
 
+#include "pear/detail/scheduler.hpp"
+#include "pear/export.hpp"
+
 namespace pear {
 
 class Executor;
 class TaskGraph;
 class Future;
 
-namespace detail {
-class ExecutorImpl;
-struct RunState;
-
-/// What a deque holds: one function pointer, no virtual table. execute() owns the job.
-struct Job {
-  void (*execute)(Job*);
-};
-
-/// Outstanding work of a group or run, times two; bit 0 says "a waiter may be asleep".
-class WaitCounter {
- public:
-  void add(std::size_t n) noexcept { state_.fetch_add(2 * n, std::memory_order_relaxed); }
-  bool done() const noexcept { return state_.load(std::memory_order_acquire) < 2; }
-  /// One unit done. True when it was the last one and a waiter may sleep: wake it.
-  bool arrive() noexcept { return state_.fetch_sub(2, std::memory_order_seq_cst) == 3; }
-  /// Before a waiter sleeps. False when already done (no need to sleep).
-  bool mark_sleeper() noexcept { return state_.fetch_or(1, std::memory_order_seq_cst) >= 2; }
-  void clear_sleeper() noexcept { state_.fetch_and(~std::uint64_t{1}, std::memory_order_relaxed); }
-
- private:
-  std::atomic<std::uint64_t> state_{0};
-};
-
-/// The thread's view of an executor for a scope: it owns a deque there (or uses the shared
-/// queue when all are taken). Scopes nest strictly (they live on the stack).
-class ThreadScope {
- public:
-  explicit ThreadScope(ExecutorImpl& executor);
-  ~ThreadScope();
-  ThreadScope(const ThreadScope&) = delete;
-  ThreadScope& operator=(const ThreadScope&) = delete;
-
- private:
-  ExecutorImpl* saved_executor_ = nullptr;
-  void* saved_slot_ = nullptr;
-  bool entered_ = false;
-};
-
-void spawn(ExecutorImpl& executor, Job* job) noexcept;
-void help_until(ExecutorImpl& executor, WaitCounter& counter);
-void wake_waiters(ExecutorImpl& executor) noexcept;
-ExecutorImpl& impl_of(Executor& executor) noexcept;
-
-template <class F>
-void invoke_task(F& task, const std::stop_token& stop) {
-  if constexpr (std::is_invocable_v<F&, std::stop_token>) {
-    task(stop);
-  } else {
-    task();
-  }
-}
-
-/// A move-only type-erased task body (std::function would require copyable closures).
-class TaskBody {
- public:
-  TaskBody() = default;
-  template <class F>
-  explicit TaskBody(F&& task)
-      : holder_(std::make_unique<Holder<std::decay_t<F>>>(std::forward<F>(task))) {}
-  void operator()(const std::stop_token& stop) const {
-    if (holder_) holder_->call(stop);
-  }
-
- private:
-  struct Base {
-    virtual ~Base() = default;
-    virtual void call(const std::stop_token& stop) = 0;
-  };
-  template <class F>
-  struct Holder final : Base {
-    explicit Holder(F&& f) : task(std::move(f)) {}
-    explicit Holder(const F& f) : task(f) {}
-    void call(const std::stop_token& stop) override { invoke_task(task, stop); }
-    F task;
-  };
-  std::unique_ptr<Base> holder_;
-};
-}  // namespace detail
-
 /// Tasks run on N - 1 worker threads plus the waiting thread. Thread-safe; share one across
 /// many triangulations. Must not be destroyed from one of its own tasks.
-class Executor {
+class PEAR_API Executor {
  public:
   /// concurrency = how many threads run tasks at once, >= 1 (0 is taken as 1). Throws
   /// std::invalid_argument above 4096, std::system_error when a thread cannot be started.
@@ -152,12 +75,12 @@ class Executor {
 };
 
 /// The executor pear uses when given none: created on first use with hardware_concurrency().
-Executor& default_executor();
+PEAR_API Executor& default_executor();
 /// The executor whose task or wait this thread is in, else default_executor().
-Executor& current_executor();
+PEAR_API Executor& current_executor();
 
 /// The result of Executor::run. Move-only; the destructor waits (without rethrowing).
-class Future {
+class PEAR_API Future {
  public:
   Future() = default;
   explicit Future(std::shared_ptr<detail::RunState> state) : state_(std::move(state)) {}
@@ -181,7 +104,7 @@ class Future {
 /// A set of closures that run in parallel; wait() waits for all of them. run() may be called
 /// from the group's own tasks (recursive spawning). Create and destroy it on one thread, as a
 /// scoped object. The destructor cancels what has not started and waits.
-class TaskGroup {
+class PEAR_API TaskGroup {
  public:
   explicit TaskGroup(Executor& executor = current_executor(), std::stop_token stop = {});
   ~TaskGroup();
@@ -250,7 +173,7 @@ class TaskGroup {
 };
 
 /// Handle to a task of a TaskGraph (cheap to copy). Valid while the graph lives.
-class Task {
+class PEAR_API Task {
  public:
   /// This task runs before each of others. Throws std::invalid_argument across graphs.
   template <std::same_as<Task>... Others>
@@ -276,7 +199,7 @@ class Task {
 };
 
 /// A dependency graph of tasks: build once (emplace, precede), run many times.
-class TaskGraph {
+class PEAR_API TaskGraph {
  public:
   TaskGraph() = default;
   TaskGraph(const TaskGraph&) = delete;

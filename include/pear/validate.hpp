@@ -44,10 +44,10 @@ struct ValidationReport {
   std::vector<std::string> messages;  ///< what failed and where, at most max_messages
 };
 
-/// Validates triangles (indices into `polygon` numbered ring after ring) against the polygon.
-ValidationReport validate(const detail::FlatPolygon& polygon,
-                          std::span<const std::array<std::uint32_t, 3>> triangles,
-                          const ValidateOptions& options = {});
+/// Validates triangles (indices into polygon.points) against the polygon.
+PEAR_API ValidationReport validate(const PolygonView& polygon,
+                                   std::span<const std::array<std::uint32_t, 3>> triangles,
+                                   const ValidateOptions& options = {});
 
 /// Same for any ring range and index type.
 template <ring_range Rings, class Index>
@@ -58,7 +58,7 @@ ValidationReport validate(const Rings& rings, std::span<const std::array<Index, 
   std::vector<std::array<std::uint32_t, 3>> wide(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
     for (int k = 0; k < 3; ++k) wide[t][k] = static_cast<std::uint32_t>(triangles[t][k]);
-  return validate(flat, wide, options);
+  return validate(PolygonView{flat.points, flat.ring_starts}, wide, options);
 }
 
 /// Same for a vector of triangles, as a Triangulation holds them.

@@ -58,7 +58,7 @@ void list_once(const Mesh& mesh, std::uint32_t h, RoundMarks& marks,
 /// Runs body(begin, end) over [0, count) in chunks: as parallel tasks when the round is large,
 /// else right here (the result is the same either way).
 template <class Body>
-void for_chunks(const ParallelContext& ctx, bool parallel, const char* phase, std::size_t count,
+void for_chunks(const RunContext& ctx, bool parallel, const char* phase, std::size_t count,
                 Body&& body) {
   if (!parallel) return body(std::size_t{0}, count);
   ctx.run_tasks(phase, (count + round_chunk - 1) / round_chunk, [&](std::size_t c) {
@@ -69,7 +69,7 @@ void for_chunks(const ParallelContext& ctx, bool parallel, const char* phase, st
 /// One round; returns the flips done (at most `budget`) and leaves the next suspects in
 /// `suspects`.
 std::size_t flip_round(Mesh& mesh, std::vector<std::uint32_t>& suspects, RoundMarks& marks,
-                       const ParallelContext& ctx, std::size_t budget) {
+                       const RunContext& ctx, std::size_t budget) {
   const bool parallel = suspects.size() >= min_round_suspects;
   std::vector<std::uint8_t>& needs = marks.needs;
   needs.assign(suspects.size(), 0);
@@ -135,8 +135,8 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
   return first_of_pair;
 }
 
-std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
-                         const ParallelContext& ctx, std::size_t budget) {
+std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects, const RunContext& ctx,
+                         std::size_t budget) {
   RoundMarks marks;
   marks.own.assign(mesh.triangles->size(), 0);
   marks.touched.assign(mesh.triangles->size(), 0);

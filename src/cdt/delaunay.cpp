@@ -33,7 +33,7 @@ void push_interior_edges(const Mesh& mesh, std::vector<std::uint32_t>& stack,
   }
 }
 
-void flip_sequentially(Mesh& mesh, std::size_t budget, const ParallelContext& ctx,
+void flip_sequentially(Mesh& mesh, std::size_t budget, const RunContext& ctx,
                        DelaunayStatistics& stats) {
   ctx.run_serial("cdt flip", [&] {
     std::vector<std::uint32_t> stack;
@@ -43,7 +43,7 @@ void flip_sequentially(Mesh& mesh, std::size_t budget, const ParallelContext& ct
   });
 }
 
-void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const ParallelContext& ctx,
+void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunContext& ctx,
                   DelaunayStatistics& stats) {
   TrianglePartition partition;
   ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
@@ -80,7 +80,7 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const Para
 }  // namespace
 
 void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
-                   TriangleList& triangles, const ParallelContext& ctx, DelaunayStatistics& stats) {
+                   TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats) {
   stats = {};
   Mesh mesh;
   bool built = false;

@@ -3,9 +3,7 @@
 
 #include <span>
 
-#include "../earclip/clean.hpp"
-#include "../earclip/ear_clipper.hpp"
-#include "../parallel/context.hpp"
+#include "core/stage.hpp"
 
 namespace pear::detail {
 
@@ -14,6 +12,6 @@ namespace pear::detail {
 /// the polygon's ring edges; bridges and other diagonals are not. Runs in parallel when
 /// ctx.parallel(); the result depends on ctx.partitions at most through cocircular ties.
 void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
-                   TriangleList& triangles, const ParallelContext& ctx, DelaunayStatistics& stats);
+                   TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats);
 
 }  // namespace pear::detail

@@ -5,9 +5,8 @@
 #include <span>
 #include <vector>
 
-#include "../earclip/boundary.hpp"
-#include "../earclip/clean.hpp"
-#include "../earclip/ear_clipper.hpp"
+#include "core/stage.hpp"
+#include "geometry/segments.hpp"
 
 namespace pear::detail {
 

@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "boundary.hpp"
-#include "clean.hpp"
-#include "uniform_grid.hpp"
+#include "core/stage.hpp"
+#include "geometry/uniform_grid.hpp"
 
 namespace pear::detail {
 

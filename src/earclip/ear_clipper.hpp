@@ -7,13 +7,12 @@
 #include <vector>
 
 #include "boundary.hpp"
+#include "core/stage.hpp"
 #include "ear_queue.hpp"
 #include "pear/pear.hpp"
 #include "reflex_grid.hpp"
 
 namespace pear::detail {
-
-using TriangleList = std::vector<std::array<std::uint32_t, 3>>;
 
 class EarClipper {
  public:

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "boundary.hpp"
-#include "uniform_grid.hpp"
+#include "geometry/uniform_grid.hpp"
 
 namespace pear::detail {
 

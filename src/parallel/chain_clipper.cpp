@@ -2,7 +2,7 @@
 
 #include <span>
 
-#include "../earclip/ear_test.hpp"
+#include "earclip/ear_test.hpp"
 
 namespace pear::detail {
 

@@ -31,7 +31,7 @@ struct PartResult {
 /// Recursive halving (paper §2.1): the middle line first, then the middles of both halves, and
 /// so on; the slabs of one level are cut in parallel. Returns the slabs left to right.
 bool split_into_parts(const Boundary& b, std::vector<PieceCorner> cycle,
-                      std::vector<SplitLine>& lines, const ParallelContext& ctx,
+                      std::vector<SplitLine>& lines, const RunContext& ctx,
                       std::vector<Slab>& slabs) {
   slabs.assign(1, Slab{});
   slabs[0].pieces.corners = std::move(cycle);
@@ -120,8 +120,8 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
 
 /// Redoes the triangles at Steiner points from input vertices, the holes spread over tasks.
 bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
-                           const std::vector<PartResult>& parts, const ParallelContext& ctx,
-                           std::vector<TriangleList>& patches) {
+                           const std::vector<PartResult>& parts, EarHeuristic heuristic,
+                           const RunContext& ctx, std::vector<TriangleList>& patches) {
   std::vector<SteinerTriangle> at_steiner;
   SteinerRepair repair;
   bool found = false;
@@ -155,7 +155,7 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
   ctx.run_tasks("fill Steiner holes", tasks, [&](std::size_t task) {
     HoleClipper scratch;
     for (std::size_t h = first_hole(task); h < first_hole(task + 1) && ok[task]; ++h)
-      ok[task] = repair.triangulate_hole(h, b, ctx.heuristic, scratch, patches[task], fills[task]);
+      ok[task] = repair.triangulate_hole(h, b, heuristic, scratch, patches[task], fills[task]);
   });
   if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
   bool fits = false;
@@ -170,18 +170,17 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
 /// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.
 /// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
 bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
-                       std::vector<SplitLine>& lines, const ParallelContext& ctx,
+                       std::vector<SplitLine>& lines, EarHeuristic heuristic, const RunContext& ctx,
                        TriangleList& out) {
   std::vector<Slab> slabs;
   if (!split_into_parts(b, std::move(cycle), lines, ctx, slabs)) return false;
   std::vector<PartResult> parts(slabs.size());
-  ctx.run_tasks("clip parts", slabs.size(), [&](std::size_t s) {
-    clip_part(b, lines, slabs[s].pieces, ctx.heuristic, parts[s]);
-  });
+  ctx.run_tasks("clip parts", slabs.size(),
+                [&](std::size_t s) { clip_part(b, lines, slabs[s].pieces, heuristic, parts[s]); });
   if (std::any_of(parts.begin(), parts.end(), [](const PartResult& p) { return !p.ok; }))
     return false;
   std::vector<TriangleList> patches;
-  if (!remove_steiner_points(b, lines, parts, ctx, patches)) return false;
+  if (!remove_steiner_points(b, lines, parts, heuristic, ctx, patches)) return false;
   // The parts' triangles, then the holes', each copied by its own task to its place in `out`.
   std::vector<const TriangleList*> lists;
   for (const PartResult& part : parts) lists.push_back(&part.kept);
@@ -197,8 +196,9 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
 
 }  // namespace
 
-bool divide_and_conquer(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
-                        TriangleList& out, std::uint32_t& best_effort_vertex) {
+bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                        const RunContext& ctx, TriangleList& out,
+                        std::uint32_t& best_effort_vertex) {
   std::vector<PieceCorner> cycle;
   std::vector<SplitLine> lines;
   ctx.run_serial("place split lines", [&] {
@@ -215,13 +215,13 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, const ParallelContext&
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();
-    if (split_clip_repair(b, std::move(cycle), lines, ctx, out)) return true;
+    if (split_clip_repair(b, std::move(cycle), lines, heuristic, ctx, out)) return true;
     out.resize(start);
     phase = "fall back to sequential";  // RunProfile shows how often this happens
   }
   EarClipper clipper;
   bool complete = true;
-  ctx.run_serial(phase, [&] { complete = clipper.run(b, entry, ctx.heuristic, out); });
+  ctx.run_serial(phase, [&] { complete = clipper.run(b, entry, heuristic, out); });
   best_effort_vertex = clipper.best_effort_vertex();
   return complete;
 }

@@ -9,7 +9,7 @@
 
 #include <vector>
 
-#include "../earclip/ear_clipper.hpp"
+#include "earclip/ear_clipper.hpp"
 #include "split_pieces.hpp"
 
 namespace pear::detail {

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "../earclip/ear_clipper.hpp"
+#include "earclip/ear_clipper.hpp"
 #include "split_pieces.hpp"
 
 namespace pear::detail {

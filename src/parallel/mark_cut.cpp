@@ -9,7 +9,7 @@
 // Rounds go on while they clip enough; the sequential engine finishes the rest.
 #include <algorithm>
 
-#include "../earclip/ear_test.hpp"
+#include "earclip/ear_test.hpp"
 #include "shared_boundary.hpp"
 #include "variants.hpp"
 
@@ -20,7 +20,7 @@ constexpr std::size_t min_chunk_nodes = 256;  ///< below this a task costs more 
 
 class MarkAndCut {
  public:
-  MarkAndCut(SharedBoundary& s, std::size_t chunks, const ParallelContext& ctx)
+  MarkAndCut(SharedBoundary& s, std::size_t chunks, const RunContext& ctx)
       : s_(s), b_(*s.b), ctx_(ctx), ears_(chunks), triangles_(chunks) {
     marks_ = s.place_landmarks(chunks, 0, ctx, true);
   }
@@ -92,7 +92,7 @@ class MarkAndCut {
 
   SharedBoundary& s_;
   Boundary& b_;
-  const ParallelContext& ctx_;
+  const RunContext& ctx_;
   std::vector<std::size_t> marks_;
   std::vector<std::vector<std::uint32_t>> ears_;
   std::vector<TriangleList> triangles_;
@@ -100,7 +100,7 @@ class MarkAndCut {
 
 }  // namespace
 
-std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
+std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& ctx,
                            TriangleList& out) {
   SharedBoundary s;
   const std::size_t nodes = s.start(b, entry, ctx);

@@ -19,7 +19,7 @@ constexpr int max_rounds = 4;
 constexpr double landmark_shift[max_rounds] = {0, 0.5, 0.25, 0.75};
 
 /// Appends the parts in order, copying them in parallel.
-void gather(std::vector<TriangleList>& parts, std::size_t count, const ParallelContext& ctx,
+void gather(std::vector<TriangleList>& parts, std::size_t count, const RunContext& ctx,
             TriangleList& out) {
   std::vector<std::size_t> offset(count + 1, out.size());
   for (std::size_t c = 0; c < count; ++c) offset[c + 1] = offset[c] + parts[c].size();
@@ -31,8 +31,8 @@ void gather(std::vector<TriangleList>& parts, std::size_t count, const ParallelC
 
 }  // namespace
 
-std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
-                                TriangleList& out) {
+std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                                const RunContext& ctx, TriangleList& out) {
   const std::size_t partitions = ctx.partitions;
   if (partitions < 2) return entry;
   SharedBoundary s;
@@ -48,7 +48,7 @@ std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const Parallel
     ctx.run_tasks("clip chains", chains, [&](std::size_t c) {
       parts[c].clear();
       clippers[c].run(s, static_cast<std::uint32_t>(c), marks[c], marks[(c + 1) % chains],
-                      ctx.heuristic, parts[c]);
+                      heuristic, parts[c]);
     });
     std::size_t clipped = 0;
     for (std::size_t c = 0; c < chains; ++c) clipped += parts[c].size();

@@ -2,13 +2,12 @@
 
 #include <algorithm>
 
-#include "../earclip/pinches.hpp"
+#include "earclip/pinches.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
 
-std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry,
-                                  const ParallelContext& ctx) {
+std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx) {
   b = &boundary;
   const std::size_t size = b->size();
   alive.assign(size, 0);
@@ -35,7 +34,7 @@ std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry,
   return order.size();
 }
 
-std::uint32_t SharedBoundary::refresh_order(const ParallelContext& ctx) {
+std::uint32_t SharedBoundary::refresh_order(const RunContext& ctx) {
   std::uint32_t entry = no_node;
   for (std::uint32_t u : order)
     if (alive[u]) {
@@ -55,8 +54,7 @@ std::uint32_t SharedBoundary::refresh_order(const ParallelContext& ctx) {
 }
 
 std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count,
-                                                         std::size_t offset,
-                                                         const ParallelContext& ctx,
+                                                         std::size_t offset, const RunContext& ctx,
                                                          bool removable) {
   chains = chain_count;
   std::vector<std::size_t> marks(chains);

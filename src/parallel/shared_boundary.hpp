@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "../earclip/boundary.hpp"
-#include "../earclip/reflex_grid.hpp"
-#include "context.hpp"
+#include "core/stage.hpp"
+#include "earclip/boundary.hpp"
+#include "earclip/reflex_grid.hpp"
 
 namespace pear::detail {
 
@@ -31,14 +31,14 @@ struct SharedBoundary {
 
   /// Walks the cycle through `entry`, marks it alive, finds pinches and hashed nodes. Returns
   /// the cycle's length.
-  std::size_t start(Boundary& boundary, std::uint32_t entry, const ParallelContext& ctx);
+  std::size_t start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx);
   /// Refreshes `order` from a live node of the cycle; returns a live node or no node.
-  std::uint32_t refresh_order(const ParallelContext& ctx);
+  std::uint32_t refresh_order(const RunContext& ctx);
   /// Cuts `order` into `chains` runs at evenly spaced landmarks, the first at `offset`; sets
   /// owner, builds the start grids (`removable`: their owners may take nodes out of them) and
   /// returns the landmarks' positions in `order`.
   std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
-                                           const ParallelContext& ctx, bool removable = false);
+                                           const RunContext& ctx, bool removable = false);
 
   /// Calls visit(entry) for the hashed nodes near triangle (a, b, c) that other chains than
   /// `chain` held at the phase start, until visit returns true; returns whether it did.

@@ -4,9 +4,9 @@
 
 #include <cstdint>
 
-#include "../earclip/boundary.hpp"
-#include "../earclip/ear_clipper.hpp"
-#include "context.hpp"
+#include "core/stage.hpp"
+#include "earclip/boundary.hpp"
+#include "earclip/ear_clipper.hpp"
 
 namespace pear::detail {
 
@@ -16,19 +16,20 @@ inline constexpr std::uint32_t no_node = UINT32_MAX;
 /// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
 /// (chain after chain) to `out` and returns a live node of what is left for the sequential
 /// engine to finish, or no_node when nothing is left.
-std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
-                                TriangleList& out);
+std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                                const RunContext& ctx, TriangleList& out);
 
 /// Paper §2.3: rounds of "mark every second convex node, clip in parallel the marked ones that
 /// are ears" until a round clips few; returns what is left, as partition_and_cut does.
-std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
+std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& ctx,
                            TriangleList& out);
 
 /// Paper §2.1: splits the polygon bounded by the cycle through `entry` along ctx.partitions - 1
 /// vertical lines, triangulates the parts in parallel, and removes the Steiner points again, so
 /// that the triangles use input vertices only. Returns false when a best-effort fallback acted
 /// (the boundary was not weakly simple); best_effort_vertex then names where (caller's index).
-bool divide_and_conquer(Boundary& b, std::uint32_t entry, const ParallelContext& ctx,
-                        TriangleList& out, std::uint32_t& best_effort_vertex);
+bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                        const RunContext& ctx, TriangleList& out,
+                        std::uint32_t& best_effort_vertex);
 
 }  // namespace pear::detail

@@ -58,7 +58,7 @@ struct EdgeGroup {
 
 class Validator {
  public:
-  Validator(const detail::FlatPolygon& polygon, std::span<const Triangle> triangles,
+  Validator(const PolygonView& polygon, std::span<const Triangle> triangles,
             const ValidateOptions& options)
       : polygon_(polygon), triangles_(triangles), options_(options) {}
 
@@ -84,7 +84,7 @@ class Validator {
 
   // "7 (ring 1, vertex 2)": an index and where the caller's numbering puts it.
   std::string vertex_name(std::uint32_t index) const {
-    const auto& starts = polygon_.ring_starts;
+    const auto& starts = polygon_.ring_offsets;
     const auto ring = static_cast<std::size_t>(
         std::upper_bound(starts.begin(), starts.end(), index) - starts.begin() - 1);
     return std::to_string(index) + " (ring " + std::to_string(ring) + ", vertex " +
@@ -112,7 +112,7 @@ class Validator {
   void check_count();
   void check_area();
 
-  const detail::FlatPolygon& polygon_;
+  const PolygonView polygon_;
   std::span<const Triangle> triangles_;
   const ValidateOptions& options_;
   ValidationReport report_;
@@ -131,7 +131,7 @@ class Validator {
 constexpr std::int8_t left_out = 2;
 
 bool Validator::check_structure() {
-  const auto& starts = polygon_.ring_starts;
+  const auto& starts = polygon_.ring_offsets;
   const std::size_t count = polygon_.points.size();
   if (starts.size() < 2) {
     fail([] { return std::string("the polygon has no rings"); });
@@ -180,7 +180,7 @@ bool Validator::check_coordinates() {
 void Validator::keep_ring(std::size_t ring, std::vector<std::uint32_t>& kept) {
   const auto& points = polygon_.points;
   kept.clear();
-  for (std::uint32_t i = polygon_.ring_starts[ring]; i < polygon_.ring_starts[ring + 1]; ++i)
+  for (std::uint32_t i = polygon_.ring_offsets[ring]; i < polygon_.ring_offsets[ring + 1]; ++i)
     if (kept.empty() || !(points[i] == points[kept.back()])) kept.push_back(i);
   while (kept.size() > 1 && points[kept.back()] == points[kept.front()]) kept.pop_back();
 }
@@ -189,7 +189,7 @@ bool Validator::clean_rings() {
   const auto& points = polygon_.points;
   std::vector<std::uint32_t> kept;
   boundary_starts_.push_back(0);
-  for (std::size_t ring = 0; ring + 1 < polygon_.ring_starts.size(); ++ring) {
+  for (std::size_t ring = 0; ring + 1 < polygon_.ring_offsets.size(); ++ring) {
     keep_ring(ring, kept);
     detail::ExactSum area;  // shoelace: twice the signed area
     for (std::size_t k = 0; k < kept.size(); ++k) {
@@ -533,7 +533,7 @@ void Validator::check_area() {
 
 }  // namespace
 
-ValidationReport validate(const detail::FlatPolygon& polygon,
+ValidationReport validate(const PolygonView& polygon,
                           std::span<const std::array<std::uint32_t, 3>> triangles,
                           const ValidateOptions& options) {
   return Validator(polygon, triangles, options).run();

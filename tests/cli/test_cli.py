@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Runs the built `pear` binary: exit codes 0/1/2/3, the --stats keys, outputs, inputs.
 
-usage: test_cli.py PATH/TO/pear   (meson passes the executable; PEAR_CORPUS names corpus/)
+usage: test_cli.py PATH/TO/pear PATH/TO/pear-fault-injection
+(meson passes both executables; PEAR_CORPUS names corpus/). The second is the same tool built
+for tests only, with a fault that PEAR_TEST_DROP_A_TRIANGLE switches on; the shipped one has none.
 """
 import gzip
 import json
@@ -12,6 +14,7 @@ import tempfile
 import unittest
 
 PEAR = None
+PEAR_WITH_FAULTS = None
 CORPUS = os.environ.get("PEAR_CORPUS", os.path.join(os.path.dirname(__file__), "..", "..", "corpus"))
 SOUTH_AFRICA = os.path.join(CORPUS, "countries", "south_africa_000.json")
 
@@ -22,10 +25,10 @@ SQUARE_WITH_HOLE = ('{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,1
 BOWTIE = '{"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}'
 
 
-def pear(*args, stdin=None, env=None):
+def pear(*args, stdin=None, env=None, exe=None):
     full_env = dict(os.environ)
     full_env.update(env or {})
-    return subprocess.run([PEAR, *args], input=stdin, capture_output=True, text=True,
+    return subprocess.run([exe or PEAR, *args], input=stdin, capture_output=True, text=True,
                           env=full_env, timeout=120)
 
 
@@ -130,15 +133,20 @@ class ExitCodes(Files):
                 self.assertEqual(r.stdout, "")
 
     def test_invalid_result_is_exit_three(self):
-        r = pear("triangulate", SOUTH_AFRICA, "--validate", "--stats",
-                 env={"PEAR_TEST_DROP_A_TRIANGLE": "1"})
+        drop = {"PEAR_TEST_DROP_A_TRIANGLE": "1"}
+        r = pear("triangulate", SOUTH_AFRICA, "--validate", "--stats", env=drop,
+                 exe=PEAR_WITH_FAULTS)
         self.assertEqual(r.returncode, 3, r.stderr)
         [line] = stats_lines(r)
         self.assertIs(line["valid"], False)
         self.assertIn("invalid triangulation", r.stderr)
         # Without --validate nobody checks: the run itself succeeds.
-        r = pear("triangulate", SOUTH_AFRICA, env={"PEAR_TEST_DROP_A_TRIANGLE": "1"})
+        r = pear("triangulate", SOUTH_AFRICA, env=drop, exe=PEAR_WITH_FAULTS)
         self.assertEqual(r.returncode, 0)
+        # The shipped tool has no such hook: the variable changes nothing.
+        r = pear("triangulate", SOUTH_AFRICA, "--validate", "--stats", env=drop)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIs(stats_lines(r)[0]["valid"], True)
 
     def test_help_for_every_command(self):
         for command in ["triangulate", "stats", "generate"]:
@@ -294,4 +302,5 @@ class StatsAndGenerate(Files):
 
 if __name__ == "__main__":
     PEAR = os.path.abspath(sys.argv.pop(1))
+    PEAR_WITH_FAULTS = os.path.abspath(sys.argv.pop(1))
     unittest.main(verbosity=2)

@@ -11,7 +11,7 @@
 #include <set>
 #include <vector>
 
-#include "../../src/earclip/uniform_grid.hpp"
+#include "geometry/uniform_grid.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {

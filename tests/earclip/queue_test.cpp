@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "../../src/earclip/ear_queue.hpp"
+#include "earclip/ear_queue.hpp"
 
 namespace pear::detail {
 namespace {

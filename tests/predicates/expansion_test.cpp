@@ -9,7 +9,7 @@
 #include <span>
 #include <vector>
 
-#include "expansion.hpp"
+#include "predicates/expansion.hpp"
 #include "support.hpp"
 
 namespace pear::test {

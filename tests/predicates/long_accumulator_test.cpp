@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "long_accumulator.hpp"
+#include "predicates/long_accumulator.hpp"
 #include "support.hpp"
 
 namespace pear::test {

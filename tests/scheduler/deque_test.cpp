@@ -9,7 +9,7 @@
 #include <thread>
 #include <vector>
 
-#include "pear/work_stealing_deque.hpp"
+#include "scheduler/work_stealing_deque.hpp"
 
 namespace {
 

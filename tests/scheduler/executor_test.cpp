@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "pear/scheduler.hpp"
-#include "pear/work_stealing_deque.hpp"
+#include "scheduler/work_stealing_deque.hpp"
 
 namespace {
 

@@ -1,7 +1,7 @@
 // The exact accumulator behind the validator's area check: sums that floating point gets wrong.
 #include <gtest/gtest.h>
 
-#include "exact_sum.hpp"
+#include "validate/exact_sum.hpp"
 
 namespace pear::test {
 namespace {

@@ -124,12 +124,14 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
   Triangulation<std::uint32_t> result = triangulator.triangulate(polygon, s.options);
   const double ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  // Fault injection for the CLI test of exit code 3 (no correct engine result is invalid).
+#ifdef PEAR_CLI_FAULT_INJECTION
+  // Only in the test build's pear-fault-injection (tests/cli): no correct engine result is
+  // invalid, so exit code 3 is tested by dropping a triangle.
   if (std::getenv("PEAR_TEST_DROP_A_TRIANGLE") != nullptr && !result.triangles.empty())
     result.triangles.pop_back();
-  detail::FlatPolygon flat;
-  detail::flatten(polygon, flat);
-  const std::size_t vertices = flat.points.size();
+#endif
+  std::size_t vertices = 0;
+  for (const Ring& ring : polygon) vertices += ring.size();
   if (result.status != Status::ok) {
     totals.bad_input = true;
     ++totals.failures;
@@ -140,7 +142,7 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
                      (why.empty() ? "" : ": " + why));
   }
   if (s.stats || s.validate) {
-    const QualityStatistics q = quality(flat.points, result.triangles);
+    const QualityStatistics q = quality(polygon, result.triangles);
     JsonLine line;
     line.add("file", file).add("index", index).add("vertices", vertices);
     line.add("holes", polygon.empty() ? std::size_t{0} : polygon.size() - 1);
@@ -152,7 +154,7 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
     if (s.validate) {
       ValidateOptions check;
       check.check_delaunay = s.options.delaunay;
-      const ValidationReport report = pear::validate(flat, result.triangles, check);
+      const ValidationReport report = pear::validate(polygon, result.triangles, check);
       line.add("valid", report.valid).add("area_rel_error", report.area_rel_error);
       if (!report.valid && result.status == Status::ok) {
         totals.invalid = true;

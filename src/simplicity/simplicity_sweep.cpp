@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <set>
 
-#include "boundary.hpp"
+#include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
 #include "simplicity.hpp"
 
@@ -114,7 +114,7 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
 
 /// Slab borders at x-quantiles of the edges' left ends. A conflict's point lies in both edges'
 /// x-ranges, so its slab holds both edges: the slabs together miss no conflict.
-void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const ParallelContext& ctx,
+void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
                     SmallestViolation& found) {
   const std::uint32_t n = edges.size();
   std::vector<std::vector<std::uint32_t>> lists(slabs);

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "boundary.hpp"
+#include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -54,7 +54,7 @@ bool RingEdges::conflict(std::uint32_t e, std::uint32_t f) const {
           on_open_segment(pts[after], pts[before], pts[shared]) || pts[before] == pts[after]);
 }
 
-void SimplicityCheck::index_edges(const CleanPolygon& polygon, const ParallelContext& ctx) {
+void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext& ctx) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   edges_.points = &polygon.points;
   edges_.next.resize(n);
@@ -83,8 +83,7 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const ParallelCon
 }
 
 std::optional<std::uint32_t> SimplicityCheck::find_violation(const CleanPolygon& polygon,
-                                                             const ParallelContext& ctx,
-                                                             Method method) {
+                                                             const RunContext& ctx, Method method) {
   if (polygon.points.empty()) return std::nullopt;
   index_edges(polygon, ctx);
   GridLimits limits;

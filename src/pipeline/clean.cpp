@@ -14,11 +14,11 @@ bool coordinate_in_range(double c) {
 }
 
 /// First error among the coordinates of all rings, if any.
-bool check_coordinates(const FlatPolygon& in, std::vector<Diagnostic>& diagnostics) {
-  for (std::size_t r = 0; r + 1 < in.ring_starts.size(); ++r) {
-    for (std::uint32_t i = in.ring_starts[r]; i < in.ring_starts[r + 1]; ++i) {
+bool check_coordinates(const PolygonView& in, std::vector<Diagnostic>& diagnostics) {
+  for (std::size_t r = 0; r + 1 < in.ring_offsets.size(); ++r) {
+    for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {
       const Point& p = in.points[i];
-      const std::size_t vertex = i - in.ring_starts[r];
+      const std::size_t vertex = i - in.ring_offsets[r];
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         diagnostics.push_back({Issue::non_finite_coordinate, r, vertex});
         return false;
@@ -33,7 +33,7 @@ bool check_coordinates(const FlatPolygon& in, std::vector<Diagnostic>& diagnosti
 }
 
 /// Appends ring [begin, end) without repeated consecutive points (nor a repeated closing point).
-void append_deduplicated(const FlatPolygon& in, std::uint32_t begin, std::uint32_t end,
+void append_deduplicated(const PolygonView& in, std::uint32_t begin, std::uint32_t end,
                          CleanPolygon& out) {
   const std::size_t first = out.points.size();
   for (std::uint32_t i = begin; i < end; ++i) {
@@ -80,11 +80,11 @@ void drop_ring(CleanPolygon& out, std::size_t first) {
 
 }  // namespace
 
-Status clean_polygon(const FlatPolygon& in, CleanPolygon& out,
+Status clean_polygon(const PolygonView& in, CleanPolygon& out,
                      std::vector<Diagnostic>& diagnostics) {
   out.clear();
-  const std::size_t rings = in.ring_starts.empty() ? 0 : in.ring_starts.size() - 1;
-  if (rings == 0 || in.ring_starts[1] == 0) {
+  const std::size_t rings = in.ring_offsets.empty() ? 0 : in.ring_offsets.size() - 1;
+  if (rings == 0 || in.ring_offsets[1] == 0) {
     diagnostics.push_back({Issue::empty_input, 0, 0});
     return Status::invalid_input;
   }
@@ -92,7 +92,7 @@ Status clean_polygon(const FlatPolygon& in, CleanPolygon& out,
 
   for (std::size_t r = 0; r < rings; ++r) {
     const std::size_t first = out.points.size();
-    append_deduplicated(in, in.ring_starts[r], in.ring_starts[r + 1], out);
+    append_deduplicated(in, in.ring_offsets[r], in.ring_offsets[r + 1], out);
     const std::size_t count = out.points.size() - first;
     const int orientation = count >= 3 ? ring_orientation(&out.points[first], count) : 0;
     if (count < 3 || orientation == 0) {

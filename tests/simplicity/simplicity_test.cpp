@@ -14,11 +14,11 @@
 #include <numeric>
 #include <random>
 
-#include "../../src/earclip/clean.hpp"
-#include "../../src/earclip/simplicity.hpp"
 #include "pear/generate.hpp"
 #include "pear/io.hpp"
 #include "pear/predicates.hpp"
+#include "pipeline/clean.hpp"
+#include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
 namespace {
@@ -104,7 +104,7 @@ CleanPolygon cleaned(const Polygon& polygon) {
   flatten(polygon, flat);
   CleanPolygon clean;
   std::vector<Diagnostic> diagnostics;
-  clean_polygon(flat, clean, diagnostics);
+  clean_polygon(PolygonView{flat.points, flat.ring_starts}, clean, diagnostics);
   return clean;
 }
 
@@ -121,11 +121,11 @@ CleanPolygon random_polygon(std::mt19937& rng, int rings, int max_vertices, int 
 /// Contexts with 1, 2 and 4 threads: the answer must not depend on which.
 struct Contexts {
   std::vector<std::unique_ptr<Executor>> executors;
-  std::vector<ParallelContext> list;
+  std::vector<RunContext> list;
   Contexts() {
     for (std::size_t threads : {1, 2, 4}) {
       executors.push_back(std::make_unique<Executor>(threads));
-      list.push_back(ParallelContext{.executor = executors.back().get()});
+      list.push_back(RunContext{.executor = executors.back().get()});
     }
   }
 };
@@ -147,7 +147,7 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
     if (first) {
       EXPECT_TRUE(reference.involved(*first)) << *first;
     }
-    for (const ParallelContext& ctx : contexts.list)
+    for (const RunContext& ctx : contexts.list)
       EXPECT_EQ(check.find_violation(polygon, ctx, method), first) << "deterministic";
   }
 }
@@ -221,7 +221,7 @@ TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   const Reference reference(clean);
   SimplicityCheck check;
   for (Method method : {Method::automatic, Method::sweep_only}) {
-    const auto found = check.find_violation(clean, ParallelContext{}, method);
+    const auto found = check.find_violation(clean, RunContext{}, method);
     ASSERT_TRUE(found);
     EXPECT_TRUE(reference.involved(*found));
   }

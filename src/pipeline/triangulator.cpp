@@ -12,8 +12,7 @@ Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
 
 Status Triangulator::run(const Options& options, std::vector<Diagnostic>& diagnostics,
                          DelaunayStatistics& delaunay) {
-  detail::ParallelContext ctx;
-  ctx.heuristic = options.heuristic;
+  detail::RunContext ctx;
   ctx.profile = options.profile;
   if (options.profile) options.profile->phases.clear();
   if (options.executor) {
@@ -27,11 +26,12 @@ Status Triangulator::run(const Options& options, std::vector<Diagnostic>& diagno
   }
   const std::size_t threads = ctx.executor ? ctx.executor->concurrency() : 1;
   ctx.partitions = static_cast<std::uint32_t>(options.partitions ? options.partitions : threads);
-  return engine_->triangulate(flat_, options, ctx, triangles_, diagnostics, delaunay);
+  return engine_->triangulate(PolygonView{flat_.points, flat_.ring_starts}, options, ctx,
+                              triangles_, diagnostics, delaunay);
 }
 
 EarStatistics Triangulator::run_statistics() {
-  return engine_->statistics(flat_);
+  return engine_->statistics(PolygonView{flat_.points, flat_.ring_starts});
 }
 
 }  // namespace pear

@@ -1,35 +1,37 @@
-// The sequential engine: clean -> boundary with bridges -> ear clipping.
+// One run of the pipeline: clean -> check -> bridge -> clip (sequential or a parallel
+// variant) -> CDT. The stages are functions of the algorithm folders; the engine owns their
+// buffers, so a reused engine allocates nothing once warm.
 #pragma once
 
 #include <vector>
 
-#include "../parallel/context.hpp"
-#include "bridge.hpp"
 #include "clean.hpp"
-#include "ear_clipper.hpp"
-#include "simplicity.hpp"
-#include "touching.hpp"
+#include "core/stage.hpp"
+#include "earclip/bridge.hpp"
+#include "earclip/ear_clipper.hpp"
+#include "earclip/touching.hpp"
+#include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
 
 class Engine {
  public:
-  Status triangulate(const FlatPolygon& input, const Options& options, const ParallelContext& ctx,
+  Status triangulate(const PolygonView& input, const Options& options, const RunContext& ctx,
                      TriangleList& out, std::vector<Diagnostic>& diagnostics,
                      DelaunayStatistics& delaunay);
-  EarStatistics statistics(const FlatPolygon& input);
+  EarStatistics statistics(const PolygonView& input);
 
  private:
   /// Cleans and bridges; returns false when nothing can be triangulated.
-  bool prepare(const FlatPolygon& input, bool check_simplicity, const ParallelContext& ctx,
+  bool prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                std::vector<Diagnostic>& diagnostics, Status& status);
   /// Clips the prepared boundary with `algorithm`; false when a best-effort fallback acted.
-  bool clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
-            TriangleList& out, std::uint32_t& best_effort_vertex);
+  bool clip(Algorithm algorithm, const Options& options, const RunContext& ctx, TriangleList& out,
+            std::uint32_t& best_effort_vertex);
   /// The algorithm on the first cycle, the sequential engine on what it leaves.
-  bool clip_main(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+  bool clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                  TriangleList& out, std::uint32_t& best_effort_vertex);
-  Diagnostic locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const;
+  Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
   CleanPolygon clean_;
   Boundary boundary_;

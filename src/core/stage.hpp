@@ -1,21 +1,44 @@
-// What the parallel variants share: where tasks run, into how many parts the work is cut, and
-// the profile that records every task's time for the work/span analysis.
+// The types that cross the pipeline's stages (docs/architecture.md): the cleaned polygon that
+// the checks, the bridges and the CDT read, the triangle list every algorithm appends to, and
+// where a stage's tasks run. The algorithm folders share these and nothing else.
 #pragma once
 
+#include <array>
 #include <chrono>
 #include <cstdint>
-#include <string>
 #include <vector>
 
+#include "pear/geometry.hpp"
 #include "pear/pear.hpp"
 #include "pear/scheduler.hpp"
 
 namespace pear::detail {
 
-struct ParallelContext {
+/// Triangles as counterclockwise triples of the caller's vertex indices.
+using TriangleList = std::vector<std::array<std::uint32_t, 3>>;
+
+/// The polygon after cleaning: repeated consecutive points and closing points dropped, outer ring
+/// counterclockwise, holes clockwise, degenerate holes removed.
+struct CleanPolygon {
+  std::vector<Point> points;               ///< kept vertices, ring after ring
+  std::vector<std::uint32_t> original;     ///< the caller's index of each kept vertex
+  std::vector<std::uint32_t> ring_starts;  ///< kept ring r is [ring_starts[r], ring_starts[r+1])
+  std::vector<std::uint32_t> ring_source;  ///< the caller's ring number of each kept ring
+  std::size_t ring_count() const { return ring_starts.empty() ? 0 : ring_starts.size() - 1; }
+  void clear() {
+    points.clear();
+    original.clear();
+    ring_starts.clear();
+    ring_source.clear();
+  }
+};
+
+/// Where a stage's tasks run, into how many parts the work is cut, and the profile that records
+/// every task's time for the work/span analysis. How to clip (the heuristic) is not here: the
+/// stages that clip take it as an argument.
+struct RunContext {
   Executor* executor = nullptr;  ///< nullptr: tasks run one after another on this thread
   std::uint32_t partitions = 1;  ///< decides the output; the thread count never does
-  EarHeuristic heuristic = EarHeuristic::top;
   RunProfile* profile = nullptr;
 
   bool parallel() const { return executor != nullptr && executor->concurrency() > 1; }

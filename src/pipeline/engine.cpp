@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "../cdt/delaunay.hpp"
-#include "../parallel/variants.hpp"
+#include "cdt/delaunay.hpp"
+#include "parallel/variants.hpp"
 
 namespace pear::detail {
 namespace {
@@ -11,7 +11,7 @@ namespace {
 /// Below this many boundary nodes the parallel variants do not pay (measured: docs/benchmarks.md).
 constexpr std::size_t parallel_threshold = 20'000;
 
-Algorithm resolve(Algorithm requested, std::size_t nodes, const ParallelContext& ctx) {
+Algorithm resolve(Algorithm requested, std::size_t nodes, const RunContext& ctx) {
   if (requested != Algorithm::automatic) return requested;
   return ctx.parallel() && nodes >= parallel_threshold ? Algorithm::partition_and_cut
                                                        : Algorithm::sequential;
@@ -19,14 +19,14 @@ Algorithm resolve(Algorithm requested, std::size_t nodes, const ParallelContext&
 
 }  // namespace
 
-Diagnostic Engine::locate(const FlatPolygon& input, Issue issue, std::uint32_t caller_index) const {
+Diagnostic Engine::locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const {
   const auto ring_end =
-      std::upper_bound(input.ring_starts.begin(), input.ring_starts.end(), caller_index);
-  const std::size_t ring = static_cast<std::size_t>(ring_end - input.ring_starts.begin()) - 1;
-  return {issue, ring, caller_index - input.ring_starts[ring]};
+      std::upper_bound(input.ring_offsets.begin(), input.ring_offsets.end(), caller_index);
+  const std::size_t ring = static_cast<std::size_t>(ring_end - input.ring_offsets.begin()) - 1;
+  return {issue, ring, caller_index - input.ring_offsets[ring]};
 }
 
-bool Engine::prepare(const FlatPolygon& input, bool check_simplicity, const ParallelContext& ctx,
+bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                      std::vector<Diagnostic>& diagnostics, Status& status) {
   ctx.run_serial("clean", [&] { status = clean_polygon(input, clean_, diagnostics); });
   if (status != Status::ok) return false;
@@ -59,7 +59,7 @@ bool Engine::prepare(const FlatPolygon& input, bool check_simplicity, const Para
   return true;
 }
 
-bool Engine::clip(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+bool Engine::clip(Algorithm algorithm, const Options& options, const RunContext& ctx,
                   TriangleList& out, std::uint32_t& best_effort_vertex) {
   if (cycles_.empty()) return true;
   bool complete = clip_main(algorithm, options, ctx, out, best_effort_vertex);
@@ -82,15 +82,15 @@ bool Engine::clip(Algorithm algorithm, const Options& options, const ParallelCon
   return complete;
 }
 
-bool Engine::clip_main(Algorithm algorithm, const Options& options, const ParallelContext& ctx,
+bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                        TriangleList& out, std::uint32_t& best_effort_vertex) {
   const std::uint32_t entry = cycles_.front();
   std::uint32_t rest = entry;
   switch (algorithm) {
     case Algorithm::divide_and_conquer:
-      return divide_and_conquer(boundary_, entry, ctx, out, best_effort_vertex);
+      return divide_and_conquer(boundary_, entry, options.heuristic, ctx, out, best_effort_vertex);
     case Algorithm::partition_and_cut:
-      rest = partition_and_cut(boundary_, entry, ctx, out);
+      rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out);
       break;
     case Algorithm::mark_and_cut:
       rest = mark_and_cut(boundary_, entry, ctx, out);
@@ -106,9 +106,9 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const Parall
   return complete;
 }
 
-Status Engine::triangulate(const FlatPolygon& input, const Options& options,
-                           const ParallelContext& ctx, TriangleList& out,
-                           std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
+Status Engine::triangulate(const PolygonView& input, const Options& options, const RunContext& ctx,
+                           TriangleList& out, std::vector<Diagnostic>& diagnostics,
+                           DelaunayStatistics& delaunay) {
   out.clear();
   Status status;
   if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;
@@ -125,10 +125,10 @@ Status Engine::triangulate(const FlatPolygon& input, const Options& options,
   return status;
 }
 
-EarStatistics Engine::statistics(const FlatPolygon& input) {
+EarStatistics Engine::statistics(const PolygonView& input) {
   std::vector<Diagnostic> ignored;
   Status status;
-  if (!prepare(input, false, ParallelContext{}, ignored, status) || cycles_.empty()) return {};
+  if (!prepare(input, false, RunContext{}, ignored, status) || cycles_.empty()) return {};
   return clipper_.statistics(boundary_, cycles_.front());
 }
 

@@ -17,9 +17,8 @@
 #include <span>
 #include <vector>
 
-#include "../parallel/context.hpp"
-#include "clean.hpp"
-#include "uniform_grid.hpp"
+#include "core/stage.hpp"
+#include "geometry/uniform_grid.hpp"
 
 namespace pear::detail {
 
@@ -83,13 +82,13 @@ struct RootGrid {
 
 /// Checks every pair of edges sharing a cell; offers the smallest edge of each conflict found.
 /// False when the root grid would hold too many entries (nothing was checked then).
-bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const ParallelContext& ctx,
+bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunContext& ctx,
                    RootGrid& root, SmallestViolation& found);
 /// Shamos-Hoey on a subset of the edges: a conflict among them (its smaller edge), if any.
 std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
                                          std::span<const std::uint32_t> subset);
 /// The sweep in `slabs` vertical slabs, in parallel; an edge goes to every slab its box meets.
-void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const ParallelContext& ctx,
+void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
                     SmallestViolation& found);
 
 class SimplicityCheck {
@@ -102,12 +101,11 @@ class SimplicityCheck {
   /// smallest such index among the conflicts found. The grid finds them all, so where it alone
   /// decides this is the smallest edge in any conflict; a sweep reports the first it meets. The
   /// same for any thread count.
-  std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon,
-                                              const ParallelContext& ctx,
+  std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon, const RunContext& ctx,
                                               Method method = Method::automatic);
 
  private:
-  void index_edges(const CleanPolygon& polygon, const ParallelContext& ctx);
+  void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
 
   RingEdges edges_;
   RootGrid root_;

@@ -197,7 +197,7 @@ std::pair<std::size_t, std::size_t> piece(std::size_t i, std::size_t pieces, std
 /// the counts become per-chunk fill positions (cell by cell, chunk by chunk, so a cell lists
 /// its edges in increasing order, as bucket_edges does), and each chunk fills its entries.
 /// False as soon as a chunk has more than `entries_per_edge` entries per edge of its own.
-bool bucket_root(const RingEdges& edges, double entries_per_edge, const ParallelContext& ctx,
+bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunContext& ctx,
                  RootGrid& root) {
   const std::size_t n = edges.size(), cells = root.frame.cell_count();
   const std::size_t chunks = std::clamp<std::size_t>(n / 32768, 1, 8);
@@ -261,7 +261,7 @@ bool bucket_root(const RingEdges& edges, double entries_per_edge, const Parallel
 
 }  // namespace
 
-bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const ParallelContext& ctx,
+bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunContext& ctx,
                    RootGrid& root, SmallestViolation& found) {
   const std::uint32_t n = edges.size();
   const Point lo{edges.bounds.x0, edges.bounds.y0}, hi{edges.bounds.x1, edges.bounds.y1};

@@ -1,0 +1,40 @@
+// pear internals that the public templates need: a ring range copied into flat arrays.
+#pragma once
+
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <vector>
+
+#include "pear/geometry.hpp"
+
+namespace pear::detail {
+
+/// The polygon as the engine reads it: all points in input order, ring after ring.
+struct FlatPolygon {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> ring_starts;  ///< ring r is [ring_starts[r], ring_starts[r+1])
+  void clear() {
+    points.clear();
+    ring_starts.clear();
+  }
+};
+
+/// Copies any ring range into a FlatPolygon. Returns false when the count exceeds 2^32 - 2.
+template <ring_range Rings>
+bool flatten(const Rings& rings, FlatPolygon& flat) {
+  flat.clear();
+  std::size_t total = 0;
+  for (const auto& ring : rings) {
+    flat.ring_starts.push_back(static_cast<std::uint32_t>(total));
+    for (const auto& p : ring) {
+      using P = std::remove_cvref_t<decltype(p)>;
+      if (++total >= std::numeric_limits<std::uint32_t>::max()) return false;
+      flat.points.push_back(Point{point_traits<P>::x(p), point_traits<P>::y(p)});
+    }
+  }
+  flat.ring_starts.push_back(static_cast<std::uint32_t>(total));
+  return true;
+}
+
+}  // namespace pear::detail
