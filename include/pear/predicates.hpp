@@ -2,6 +2,8 @@
 // paper "Adaptive Precision Floating-Point Arithmetic and Fast Robust Geometric Predicates", 1997).
 #pragma once
 
+#include <cmath>
+
 #include "pear/export.hpp"
 #include "pear/geometry.hpp"
 
@@ -23,9 +25,9 @@ inline double orient2d(const Point& a, const Point& b, const Point& c) {
   const double det_right = (a.y - c.y) * (b.x - c.x);
   const double det = det_left - det_right;
   // One bound test covers the paper's early return for products of opposite sign as well.
-  const double det_sum =
-      (det_left < 0 ? -det_left : det_left) + (det_right < 0 ? -det_right : det_right);
-  if ((det < 0 ? -det : det) >= detail::orient2d_filter_bound * det_sum) return det;
+  // std::fabs, not a comparison: signs are coin tosses for the branch predictor.
+  const double det_sum = std::fabs(det_left) + std::fabs(det_right);
+  if (std::fabs(det) >= detail::orient2d_filter_bound * det_sum) return det;
   return detail::orient2d_adaptive(a, b, c, det_sum);
 }
 
