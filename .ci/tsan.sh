@@ -22,7 +22,8 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/scheduler/scheduler_graph_test \
   tests/parallel/parallel_variants_test \
   tests/parallel/divide_conquer_test \
-  tests/cdt/cdt_test
+  tests/cdt/cdt_test \
+  tests/pipeline/batch_test
 
 # halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
@@ -30,3 +31,4 @@ meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 "$build/tests/parallel/parallel_variants_test" --gtest_filter='Tricky.*'
 "$build/tests/parallel/divide_conquer_test" --gtest_filter='DivideAndConquer.*'
 "$build/tests/cdt/cdt_test" --gtest_filter='Cdt.*'
+"$build/tests/pipeline/batch_test" --gtest_filter='Batch.SameAsOneCall*:Batch.OnTheCallersExecutor'

@@ -93,7 +93,12 @@ enum class Issue : std::uint8_t {
   hole_dropped_zero_area,   ///< a hole with zero area was ignored (warning)
   index_overflow,           ///< more vertices than the index type can number (error)
   not_simple,               ///< rings cross or overlap; result is best effort (warning)
+  invalid_offsets,          ///< ring (or polygon) offsets out of order or past the points (error)
+  invalid_options,          ///< Options out of range: threads above max_threads (error)
 };
+
+/// The most threads Options::threads may ask for.
+inline constexpr unsigned max_threads = 4096;
 
 /// One finding about the input, naming the ring (0 = outer) and the vertex index within that ring
 /// (the caller's numbering, before any cleaning).
@@ -105,7 +110,8 @@ struct Diagnostic {
   bool is_error() const {
     return issue == Issue::empty_input || issue == Issue::non_finite_coordinate ||
            issue == Issue::coordinate_out_of_range || issue == Issue::outer_ring_too_small ||
-           issue == Issue::index_overflow;
+           issue == Issue::index_overflow || issue == Issue::invalid_offsets ||
+           issue == Issue::invalid_options;
   }
 };
 

@@ -19,6 +19,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "pear/detail/flat_polygon.hpp"
@@ -124,58 +125,74 @@ namespace detail {
 class Engine;
 }  // namespace detail
 
-/// A reusable triangulator: keeps its buffers between calls, so many small polygons are cheap.
-/// Not thread-safe; use one per thread.
+/// A reusable triangulator: keeps its buffers between calls, so many small polygons cost no
+/// allocation but their results. Not thread-safe; use one per thread (or triangulate_batch).
 class PEAR_API Triangulator {
  public:
-  Triangulator();
+  Triangulator() noexcept;
   ~Triangulator();
   Triangulator(Triangulator&&) noexcept;
   Triangulator& operator=(Triangulator&&) noexcept;
 
+  /// Triangulates a range of rings, outer first. Indices number the points ring after ring.
   template <class Index = std::uint32_t, ring_range Rings>
   Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}) {
     Triangulation<Index> result;
-    if (!detail::flatten(rings, flat_)) {
+    detail::FlatPolygon& flat = input_buffer();
+    if (!detail::flatten(rings, flat)) {
       result.status = Status::index_overflow;
       result.diagnostics.push_back({Issue::index_overflow, 0, 0});
       return result;
     }
-    result.status = run(options, result.diagnostics, result.delaunay);
-    convert<Index>(result);
+    triangulate_into(PolygonView{flat.points, flat.ring_starts}, options, result);
+    return result;
+  }
+
+  /// Triangulates a polygon given as flat arrays (no copy of the points is made on the way).
+  template <class Index = std::uint32_t>
+  Triangulation<Index> triangulate(const PolygonView& polygon, const Options& options = {}) {
+    Triangulation<Index> result;
+    triangulate_into(polygon, options, result);
     return result;
   }
 
   /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
   template <ring_range Rings>
   EarStatistics ear_statistics(const Rings& rings) {
-    if (!detail::flatten(rings, flat_)) return {};
-    return run_statistics();
+    detail::FlatPolygon& flat = input_buffer();
+    if (!detail::flatten(rings, flat)) return {};
+    return run_statistics(PolygonView{flat.points, flat.ring_starts});
   }
 
  private:
-  Status run(const Options& options, std::vector<Diagnostic>& diagnostics,
-             DelaunayStatistics& delaunay);
-  EarStatistics run_statistics();
+  detail::FlatPolygon& input_buffer();
+  std::vector<std::array<std::uint32_t, 3>>& triangle_buffer();
+  Status run(const PolygonView& polygon, const Options& options,
+             std::vector<std::array<std::uint32_t, 3>>& triangles,
+             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  EarStatistics run_statistics(const PolygonView& polygon);
 
   template <class Index>
-  void convert(Triangulation<Index>& result) {
-    const std::size_t vertex_count = flat_.points.size();
-    if (vertex_count > 0 &&
-        vertex_count - 1 > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
+  void triangulate_into(const PolygonView& polygon, const Options& options,
+                        Triangulation<Index>& result) {
+    const std::size_t count = polygon.points.size();
+    if (count > 0 && count - 1 > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
       result.status = Status::index_overflow;
-      result.diagnostics.push_back({Issue::index_overflow, 0, vertex_count - 1});
-      result.triangles.clear();
+      result.diagnostics.push_back({Issue::index_overflow, 0, count - 1});
       return;
     }
-    result.triangles.resize(triangles_.size());
-    for (std::size_t t = 0; t < triangles_.size(); ++t)
-      for (int k = 0; k < 3; ++k) result.triangles[t][k] = static_cast<Index>(triangles_[t][k]);
+    if constexpr (std::is_same_v<Index, std::uint32_t>) {
+      result.status = run(polygon, options, result.triangles, result.diagnostics, result.delaunay);
+    } else {
+      std::vector<std::array<std::uint32_t, 3>>& wide = triangle_buffer();
+      result.status = run(polygon, options, wide, result.diagnostics, result.delaunay);
+      result.triangles.resize(wide.size());
+      for (std::size_t t = 0; t < wide.size(); ++t)
+        for (int k = 0; k < 3; ++k) result.triangles[t][k] = static_cast<Index>(wide[t][k]);
+    }
   }
 
-  detail::FlatPolygon flat_;
-  std::vector<std::array<std::uint32_t, 3>> triangles_;
-  std::unique_ptr<detail::Engine> engine_;
+  std::unique_ptr<detail::Engine> engine_;      ///< from a pool, on first use
   std::unique_ptr<Executor> private_executor_;  ///< for Options::threads without an executor
 };
 
@@ -188,3 +205,6 @@ Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}
 }
 
 }  // namespace pear
+
+// Many polygons in one call (after everything above: it uses Options and Status).
+#include "pear/batch.hpp"  // IWYU pragma: export

@@ -36,6 +36,10 @@ const char* to_string(Issue issue) {
       return "index_overflow";
     case Issue::not_simple:
       return "not_simple";
+    case Issue::invalid_offsets:
+      return "invalid_offsets";
+    case Issue::invalid_options:
+      return "invalid_options";
   }
   return "unknown";
 }
@@ -59,6 +63,10 @@ const char* explain(Issue issue) {
       return "vertex count does not fit the index type";
     case Issue::not_simple:
       return "rings cross or overlap near here; the triangulation is a best effort";
+    case Issue::invalid_offsets:
+      return "offsets must start at 0, never decrease, and end at the number of points";
+    case Issue::invalid_options:
+      return "Options::threads is above pear::max_threads (4096)";
   }
   return "unknown issue";
 }

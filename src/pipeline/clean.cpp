@@ -84,7 +84,19 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
                      std::vector<Diagnostic>& diagnostics) {
   out.clear();
   const std::size_t rings = in.ring_offsets.empty() ? 0 : in.ring_offsets.size() - 1;
-  if (rings == 0 || in.ring_offsets[1] == 0) {
+  if (rings == 0) {
+    diagnostics.push_back({Issue::empty_input, 0, 0});
+    return Status::invalid_input;
+  }
+  for (std::size_t r = 0; r <= rings; ++r) {
+    const std::uint32_t offset = in.ring_offsets[r];
+    const bool in_order = r == 0 ? offset == 0 : in.ring_offsets[r - 1] <= offset;
+    if (!in_order || (r == rings && offset != in.points.size())) {
+      diagnostics.push_back({Issue::invalid_offsets, r, 0});
+      return Status::invalid_input;
+    }
+  }
+  if (in.ring_offsets[1] == 0) {
     diagnostics.push_back({Issue::empty_input, 0, 0});
     return Status::invalid_input;
   }

@@ -1,6 +1,7 @@
 #include "engine.hpp"
 
 #include <algorithm>
+#include <thread>
 
 #include "cdt/delaunay.hpp"
 #include "parallel/variants.hpp"
@@ -8,16 +9,42 @@
 namespace pear::detail {
 namespace {
 
-/// Below this many boundary nodes the parallel variants do not pay (measured: docs/benchmarks.md).
+/// Below this many boundary nodes the parallel variants do not pay (measured: docs/benchmarks.md),
+/// and no stage asks for threads unless the caller chose a parallel algorithm.
 constexpr std::size_t parallel_threshold = 20'000;
 
-Algorithm resolve(Algorithm requested, std::size_t nodes, const RunContext& ctx) {
+/// Up to this many vertices a polygon of one ring takes the small path (measured:
+/// docs/engine.md, "Small polygons").
+constexpr std::size_t small_limit = 1024;
+
+/// `automatic` depends on the size and the partitions, never on the threads: the output does not
+/// change with the machine.
+Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions) {
   if (requested != Algorithm::automatic) return requested;
-  return ctx.parallel() && nodes >= parallel_threshold ? Algorithm::partition_and_cut
+  return partitions > 1 && nodes >= parallel_threshold ? Algorithm::partition_and_cut
                                                        : Algorithm::sequential;
 }
 
+bool sequential(Algorithm algorithm) {
+  return algorithm == Algorithm::automatic || algorithm == Algorithm::sequential;
+}
+
 }  // namespace
+
+std::uint32_t ExecutorChoice::concurrency() const {
+  if (given_) return static_cast<std::uint32_t>(given_->concurrency());
+  if (threads_ != 0) return threads_;
+  return std::max(1u, std::thread::hardware_concurrency());
+}
+
+Executor* ExecutorChoice::get() {
+  if (given_) return given_;
+  if (threads_ == 1) return nullptr;
+  if (threads_ == 0 || threads_ == default_executor().concurrency()) return &default_executor();
+  if (!private_ || private_->concurrency() != threads_)
+    private_ = std::make_unique<Executor>(threads_);
+  return private_.get();
+}
 
 Diagnostic Engine::locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const {
   const auto ring_end =
@@ -28,8 +55,6 @@ Diagnostic Engine::locate(const PolygonView& input, Issue issue, std::uint32_t c
 
 bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                      std::vector<Diagnostic>& diagnostics, Status& status) {
-  ctx.run_serial("clean", [&] { status = clean_polygon(input, clean_, diagnostics); });
-  if (status != Status::ok) return false;
   if (check_simplicity) {
     // Parallel on ctx's executor; records its own phases in the profile.
     const std::optional<std::uint32_t> violation = simplicity_.find_violation(clean_, ctx);
@@ -106,14 +131,41 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   return complete;
 }
 
-Status Engine::triangulate(const PolygonView& input, const Options& options, const RunContext& ctx,
+bool Engine::triangulate_small(const Options& options, TriangleList& out) {
+  const SmallVerdict verdict = simplicity_.check_small(clean_, options.check_simplicity);
+  // A violation is reported by the general path, which also gives the best effort.
+  if (verdict.touching || verdict.violation) return false;
+  out.reserve(clean_.points.size() - 2);
+  return small_.run(clean_.points, clean_.original, options.heuristic, out);
+}
+
+Status Engine::triangulate(const PolygonView& input, const Options& options, ExecutorChoice& where,
                            TriangleList& out, std::vector<Diagnostic>& diagnostics,
                            DelaunayStatistics& delaunay) {
   out.clear();
-  Status status;
+  if (options.threads > max_threads) {
+    diagnostics.push_back({Issue::invalid_options, 0, 0});
+    return Status::invalid_input;
+  }
+  RunContext ctx;
+  ctx.profile = options.profile;
+  Status status = Status::ok;
+  ctx.run_serial("clean", [&] { status = clean_polygon(input, clean_, diagnostics); });
+  if (status != Status::ok) return status;
+  bool small = false;
+  if (sequential(options.algorithm) && clean_.ring_count() == 1 &&
+      clean_.points.size() <= small_limit)
+    ctx.run_serial("clip small polygon", [&] { small = triangulate_small(options, out); });
+  if (small) {
+    if (options.delaunay) make_delaunay(input.points, clean_, out, ctx, delaunay);
+    return Status::ok;
+  }
+  ctx.partitions = options.partitions ? options.partitions : where.concurrency();
+  if (clean_.points.size() >= parallel_threshold || !sequential(options.algorithm))
+    ctx.executor = where.get();
   if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;
   out.reserve(boundary_.size());
-  const Algorithm algorithm = resolve(options.algorithm, boundary_.size(), ctx);
+  const Algorithm algorithm = resolve(options.algorithm, boundary_.size(), ctx.partitions);
   std::uint32_t best_effort_vertex = 0;
   if (!clip(algorithm, options, ctx, out, best_effort_vertex) && status == Status::ok) {
     diagnostics.push_back(locate(input, Issue::not_simple, best_effort_vertex));
@@ -127,8 +179,10 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, con
 
 EarStatistics Engine::statistics(const PolygonView& input) {
   std::vector<Diagnostic> ignored;
-  Status status;
-  if (!prepare(input, false, RunContext{}, ignored, status) || cycles_.empty()) return {};
+  Status status = clean_polygon(input, clean_, ignored);
+  if (status != Status::ok || !prepare(input, false, RunContext{}, ignored, status) ||
+      cycles_.empty())
+    return {};
   return clipper_.statistics(boundary_, cycles_.front());
 }
 

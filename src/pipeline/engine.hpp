@@ -3,25 +3,56 @@
 // buffers, so a reused engine allocates nothing once warm.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "clean.hpp"
 #include "core/stage.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/ear_clipper.hpp"
+#include "earclip/small_clipper.hpp"
 #include "earclip/touching.hpp"
+#include "pear/detail/flat_polygon.hpp"
 #include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
 
+/// Where a run's parallel stages may run: Options::executor, or an executor for
+/// Options::threads, looked up (and for the default one, created) only when a stage needs
+/// threads. A sequential run, and every small polygon, never touches an executor.
+class ExecutorChoice {
+ public:
+  ExecutorChoice(const Options& options, std::unique_ptr<Executor>& private_executor)
+      : given_(options.executor), threads_(options.threads), private_(private_executor) {}
+  /// The concurrency the executor has or will have: what `partitions` 0 stands for.
+  std::uint32_t concurrency() const;
+  /// nullptr for one thread.
+  Executor* get();
+
+ private:
+  Executor* given_;
+  unsigned threads_;
+  std::unique_ptr<Executor>& private_;
+};
+
 class Engine {
  public:
-  Status triangulate(const PolygonView& input, const Options& options, const RunContext& ctx,
+  /// Triangulates `input` into `out` (cleared first).
+  Status triangulate(const PolygonView& input, const Options& options, ExecutorChoice& where,
                      TriangleList& out, std::vector<Diagnostic>& diagnostics,
                      DelaunayStatistics& delaunay);
   EarStatistics statistics(const PolygonView& input);
 
+  /// Buffers a caller may fill and pass back as input (Triangulator's flattened rings).
+  FlatPolygon& input_buffer() { return input_; }
+  TriangleList& triangle_buffer() { return triangles_; }
+  /// Vertices the buffers were last sized for: what keeping this engine costs.
+  std::size_t footprint() const { return clean_.points.capacity() + boundary_.pos.capacity(); }
+
  private:
+  /// The small-polygon path: one ring, no repeated position, few vertices. Returns false when
+  /// it does not apply or finds the ring not simple; the general path then runs.
+  bool triangulate_small(const Options& options, TriangleList& out);
   /// Cleans and bridges; returns false when nothing can be triangulated.
   bool prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                std::vector<Diagnostic>& diagnostics, Status& status);
@@ -33,6 +64,8 @@ class Engine {
                  TriangleList& out, std::uint32_t& best_effort_vertex);
   Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
+  FlatPolygon input_;
+  TriangleList triangles_;
   CleanPolygon clean_;
   Boundary boundary_;
   SimplicityCheck simplicity_;
@@ -41,6 +74,7 @@ class Engine {
   std::vector<std::uint32_t> cycles_;  ///< one node per region to clip, the main one first
   Boundary part_;                      ///< a region copied out of boundary_
   EarClipper clipper_;
+  SmallClipper small_;
 };
 
 }  // namespace pear::detail

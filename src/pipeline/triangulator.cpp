@@ -1,37 +1,48 @@
-// pear::Triangulator: the public face of the engine. Keeps every buffer between calls.
+// pear::Triangulator: the public face of the engine. Its engine comes from the pool on first
+// use and goes back when the Triangulator goes, so a Triangulator per call is cheap too.
 #include "engine.hpp"
+#include "engine_pool.hpp"
 #include "pear/pear.hpp"
 #include "pear/scheduler.hpp"
 
 namespace pear {
 
-Triangulator::Triangulator() : engine_(std::make_unique<detail::Engine>()) {}
-Triangulator::~Triangulator() = default;
+Triangulator::Triangulator() noexcept = default;
+Triangulator::~Triangulator() {
+  detail::release_engine(std::move(engine_));
+}
 Triangulator::Triangulator(Triangulator&&) noexcept = default;
-Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
-
-Status Triangulator::run(const Options& options, std::vector<Diagnostic>& diagnostics,
-                         DelaunayStatistics& delaunay) {
-  detail::RunContext ctx;
-  ctx.profile = options.profile;
-  if (options.profile) options.profile->phases.clear();
-  if (options.executor) {
-    ctx.executor = options.executor;
-  } else if (options.threads == 0 || options.threads == default_executor().concurrency()) {
-    ctx.executor = &default_executor();
-  } else if (options.threads > 1) {
-    if (!private_executor_ || private_executor_->concurrency() != options.threads)
-      private_executor_ = std::make_unique<Executor>(options.threads);
-    ctx.executor = private_executor_.get();
+Triangulator& Triangulator::operator=(Triangulator&& other) noexcept {
+  if (this != &other) {
+    detail::release_engine(std::move(engine_));
+    engine_ = std::move(other.engine_);
+    private_executor_ = std::move(other.private_executor_);
   }
-  const std::size_t threads = ctx.executor ? ctx.executor->concurrency() : 1;
-  ctx.partitions = static_cast<std::uint32_t>(options.partitions ? options.partitions : threads);
-  return engine_->triangulate(PolygonView{flat_.points, flat_.ring_starts}, options, ctx,
-                              triangles_, diagnostics, delaunay);
+  return *this;
 }
 
-EarStatistics Triangulator::run_statistics() {
-  return engine_->statistics(PolygonView{flat_.points, flat_.ring_starts});
+detail::FlatPolygon& Triangulator::input_buffer() {
+  if (!engine_) engine_ = detail::acquire_engine();
+  return engine_->input_buffer();
+}
+
+std::vector<std::array<std::uint32_t, 3>>& Triangulator::triangle_buffer() {
+  if (!engine_) engine_ = detail::acquire_engine();
+  return engine_->triangle_buffer();
+}
+
+Status Triangulator::run(const PolygonView& polygon, const Options& options,
+                         std::vector<std::array<std::uint32_t, 3>>& triangles,
+                         std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
+  if (!engine_) engine_ = detail::acquire_engine();
+  if (options.profile) options.profile->phases.clear();
+  detail::ExecutorChoice where(options, private_executor_);
+  return engine_->triangulate(polygon, options, where, triangles, diagnostics, delaunay);
+}
+
+EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {
+  if (!engine_) engine_ = detail::acquire_engine();
+  return engine_->statistics(polygon);
 }
 
 }  // namespace pear

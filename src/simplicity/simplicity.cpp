@@ -102,4 +102,126 @@ std::optional<std::uint32_t> SimplicityCheck::find_violation(const CleanPolygon&
   return found.get();
 }
 
+/// The ring's edges as maximal runs along which x never reverses (vertical edges join the run
+/// they are in), each run's edges listed in increasing x. Within a run, edges that are not
+/// neighbours cannot meet: their x-ranges are apart, or touch only across a run of vertical
+/// edges, which would have to fold back (a neighbour conflict) to bring them together.
+void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
+  chain_order_.clear();
+  chains_.clear();
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
+    // Start where the direction turns, so that no run wraps around the ring's first point.
+    std::uint32_t start = first;
+    std::int8_t last = 0;
+    for (std::uint32_t i = first; i < end; ++i) {
+      if (direction_[i] == 0) continue;
+      if (last != 0 && direction_[i] != last) {
+        start = i;
+        break;
+      }
+      last = direction_[i];
+    }
+    std::int8_t direction = 0;
+    for (std::uint32_t e = start, step = 0; step < end - first; ++step) {
+      const std::int8_t d = direction_[e];
+      if (step == 0 || (d != 0 && direction != 0 && d != direction)) {
+        chains_.push_back({static_cast<std::uint32_t>(chain_order_.size()), 0, false, 0, 0});
+        direction = d;
+      } else if (direction == 0) {
+        direction = d;
+      }
+      chain_order_.push_back(e);
+      chains_.back().end = static_cast<std::uint32_t>(chain_order_.size());
+      chains_.back().decreasing = direction < 0;
+      e = e + 1 == end ? first : e + 1;
+    }
+  }
+  for (Chain& chain : chains_) {
+    if (chain.decreasing)
+      std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
+    chain.x0 = edges_.boxes[chain_order_[chain.begin]].x0;
+    chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
+  }
+  std::sort(chains_.begin(), chains_.end(),
+            [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
+}
+
+SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find_crossings) {
+  SmallVerdict verdict;
+  const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  const auto& pts = polygon.points;
+  edges_.points = &pts;
+  edges_.next.resize(n);
+  edges_.boxes.resize(n);
+  direction_.resize(n);
+  std::uint32_t smallest = SmallestViolation::none;
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
+    for (std::uint32_t e = first; e <= last; ++e) {
+      const std::uint32_t f = e == last ? first : e + 1, before = e == first ? last : e - 1;
+      edges_.next[e] = f;
+      const Point &a = pts[e], &b = pts[f];
+      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                         std::max(a.y, b.y)};
+      direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
+      // Neighbours conflict only by folding back over each other at their shared vertex.
+      const Point& p = pts[before];
+      if (find_crossings && before < smallest && orient2d(p, a, b) == 0 &&
+          (on_open_segment(p, a, b) || on_open_segment(b, p, a) || p == b))
+        smallest = std::min(before, e);
+    }
+  }
+  const auto& boxes = edges_.boxes;
+  const auto visit = [&](std::uint32_t e, std::uint32_t f) {
+    const EdgeBox &s = boxes[e], &t = boxes[f];
+    // One branch (`&`): most pairs are apart in y, which the predictor then learns.
+    if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (edges_.next[e] != f) & (edges_.next[f] != e))) return;
+    const Point &a = pts[e], &b = pts[edges_.next[e]], &c = pts[f], &d = pts[edges_.next[f]];
+    if (a == c || a == d || b == c || b == d) verdict.touching = true;
+    if (find_crossings && std::min(e, f) < smallest && edges_.conflict(e, f))
+      smallest = std::min(e, f);
+  };
+  const auto all_pairs = [&] {
+    for (std::uint32_t e = 0; e + 1 < n; ++e) {
+      const EdgeBox& s = boxes[e];
+      unsigned meeting = 0;
+      for (std::uint32_t f = e + 1; f < n; ++f) {
+        const EdgeBox& t = boxes[f];
+        meeting += (t.x0 <= s.x1) & (s.x0 <= t.x1) & (t.y0 <= s.y1) & (s.y0 <= t.y1) &
+                   (edges_.next[e] != f) & (edges_.next[f] != e);
+      }
+      if (meeting == 0) continue;
+      for (std::uint32_t f = e + 1; f < n; ++f)
+        if (boxes[f].x0 <= s.x1 && s.x0 <= boxes[f].x1) visit(e, f);
+    }
+  };
+  if (polygon.ring_count() == 1 && n <= 64) {
+    // All pairs, the box tests without branches: cheaper than any sorting at this size. Only
+    // rows with a meeting pair are looked at again.
+    all_pairs();
+  } else {
+    // Every pair of edges from two runs whose x-ranges meet: for each edge of the run that
+    // starts first, a window of the other run's edges (both in increasing x).
+    monotone_chains(polygon);
+    for (std::size_t i = 0; i < chains_.size(); ++i) {
+      for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
+        std::uint32_t window = chains_[j].begin;
+        for (std::uint32_t k = chains_[i].begin; k < chains_[i].end; ++k) {
+          const std::uint32_t e = chain_order_[k];
+          while (window < chains_[j].end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
+          for (std::uint32_t m = window;
+               m < chains_[j].end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
+            visit(e, chain_order_[m]);
+        }
+      }
+    }
+    // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
+    // found above): then all pairs, for the smallest edge in any conflict, as the grid gives.
+    if (find_crossings && smallest != SmallestViolation::none) all_pairs();
+  }
+  if (smallest != SmallestViolation::none) verdict.violation = smallest;
+  return verdict;
+}
+
 }  // namespace pear::detail

@@ -11,6 +11,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <optional>
@@ -91,6 +92,14 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
 void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
                     SmallestViolation& found);
 
+/// What the small check (SimplicityCheck::check_small) found.
+struct SmallVerdict {
+  std::optional<std::uint32_t> violation;  ///< as find_violation's
+  /// Two edges that are not neighbours share an endpoint position. Exact when there is no
+  /// violation (a ring folding back on itself may hide a touching pair).
+  bool touching = false;
+};
+
 class SimplicityCheck {
  public:
   /// `grid_only` (never a sweep, tiny cells: every level of the grid is exercised) and
@@ -104,11 +113,29 @@ class SimplicityCheck {
   std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon, const RunContext& ctx,
                                               Method method = Method::automatic);
 
+  /// For small polygons (a few hundred edges), sequentially: the edges sorted by the left end
+  /// of their boxes, each pair whose boxes meet visited once. Finds every conflict, so the
+  /// violation is the one find_violation reports; `find_crossings` false only looks for
+  /// touching (cheaper: no orientation tests), for runs that skip the check.
+  SmallVerdict check_small(const CleanPolygon& polygon, bool find_crossings);
+
  private:
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
 
   RingEdges edges_;
   RootGrid root_;
+  void monotone_chains(const CleanPolygon& polygon);
+
+  /// check_small's runs of edges along which x never reverses (chain_order_[begin, end), in
+  /// increasing x), sorted by where their x-ranges start.
+  struct Chain {
+    std::uint32_t begin, end;
+    bool decreasing;
+    double x0, x1;
+  };
+  std::vector<Chain> chains_;
+  std::vector<std::uint32_t> chain_order_;
+  std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
 };
 
 }  // namespace pear::detail

@@ -87,6 +87,16 @@ class Reference {
     if (best == UINT32_MAX) return std::nullopt;
     return best;
   }
+  /// Whether two edges that are not neighbours share an endpoint (a point the rings pass twice).
+  bool touching() const {
+    for (std::uint32_t e = 0; e < pts_.size(); ++e)
+      for (std::uint32_t f = e + 1; f < pts_.size(); ++f)
+        if (next_[e] != f && next_[f] != e &&
+            (pts_[e] == pts_[f] || pts_[e] == pts_[next_[f]] || pts_[next_[e]] == pts_[f] ||
+             pts_[next_[e]] == pts_[next_[f]]))
+          return true;
+    return false;
+  }
   /// Whether edge e takes part in a violation.
   bool involved(std::uint32_t e) const {
     for (std::uint32_t f = 0; f < pts_.size(); ++f)
@@ -150,6 +160,16 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
     for (const RunContext& ctx : contexts.list)
       EXPECT_EQ(check.find_violation(polygon, ctx, method), first) << "deterministic";
   }
+  // The small polygons' check sees every pair too (all pairs on one ring of at most 64 edges,
+  // runs monotone in x otherwise), and says whether the rings pass a point twice.
+  if (polygon.points.size() <= 1024) {
+    const SmallVerdict small = check.check_small(polygon, true);
+    EXPECT_EQ(small.violation, expected) << "check_small";
+    if (!expected) {
+      EXPECT_EQ(small.touching, reference.touching()) << "check_small touching";
+      EXPECT_EQ(check.check_small(polygon, false).touching, small.touching) << "touching only";
+    }
+  }
 }
 
 TEST(Simplicity, MethodsAgreeWithBruteForce) {
@@ -157,7 +177,11 @@ TEST(Simplicity, MethodsAgreeWithBruteForce) {
   const Contexts contexts;
   int violations = 0, simple = 0;
   for (int round = 0; round < 4000; ++round) {
-    const CleanPolygon polygon = random_polygon(rng, 1 + round % 3, 3 + round % 7, 3 + round % 6);
+    // One ring in every other round: the small check's all-pairs path; up to 70 vertices in
+    // some, past its limit of 64.
+    const int rings = round % 2 == 0 ? 1 : 1 + round % 3;
+    const int vertices = round % 5 == 0 ? 3 + round % 70 : 3 + round % 7;
+    const CleanPolygon polygon = random_polygon(rng, rings, vertices, 3 + round % 6);
     if (polygon.ring_count() == 0 || polygon.points.size() < 3) continue;
     SCOPED_TRACE("round " + std::to_string(round));
     expect_agreement(polygon, contexts);

@@ -1,8 +1,9 @@
 // `pear triangulate FILE...`: read, triangulate, optionally validate, report and write.
-#include <chrono>
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <span>
 
 #include "cli.hpp"
 #include "inputs.hpp"
@@ -116,14 +117,18 @@ struct Totals {
   bool invalid = false;
 };
 
-// Triangulates one polygon; prints its stats line; records problems.
-io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
-                                const Polygon& polygon, const std::string& file, std::size_t index,
-                                Totals& totals, Progress& progress) {
-  const auto start = std::chrono::steady_clock::now();
-  Triangulation<std::uint32_t> result = triangulator.triangulate(polygon, s.options);
-  const double ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+/// What the batch gave for one polygon, with indices into the polygon's own points.
+struct PolygonResult {
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  Status status = Status::ok;
+  std::span<const Diagnostic> diagnostics;
+  double ms = 0;
+};
+
+// Reports one polygon's result: its stats line, its problems (and the test build's fault).
+io::TriangulatedPolygon report_one(const Settings& s, const Polygon& polygon, PolygonResult result,
+                                   const std::string& file, std::size_t index, Totals& totals,
+                                   Progress& progress) {
 #ifdef PEAR_CLI_FAULT_INJECTION
   // Only in the test build's pear-fault-injection (tests/cli): no correct engine result is
   // invalid, so exit code 3 is tested by dropping a triangle.
@@ -149,7 +154,7 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
     line.add("triangles", result.triangles.size()).add("status", to_string(result.status));
     line.add("algorithm", s.algorithm_name).add("threads", thread_count(s.options));
     line.add("cdt", s.options.delaunay);
-    line.add("ms", ms).add("min_angle_avg_deg", q.min_angle_avg_deg);
+    line.add("ms", result.ms).add("min_angle_avg_deg", q.min_angle_avg_deg);
     line.add("dev60_avg_deg", q.dev60_avg_deg);
     if (s.validate) {
       ValidateOptions check;
@@ -167,6 +172,92 @@ io::TriangulatedPolygon run_one(const Settings& s, Triangulator& triangulator,
   return {polygon, std::move(result.triangles), {}};
 }
 
+/// Files read but not yet triangulated: they go to pear::triangulate_batch together, so that
+/// many small polygons (a directory of parcels, a file of countries) run in parallel.
+class Group {
+ public:
+  /// Vertices past which the group is triangulated before more files are read.
+  static constexpr std::size_t vertex_budget = std::size_t{1} << 20;
+
+  void add(std::string file, std::vector<Polygon> polygons) {
+    for (const Polygon& polygon : polygons)
+      for (const Ring& ring : polygon) vertices_ += ring.size();
+    files_.push_back({std::move(file), std::move(polygons)});
+  }
+  bool full() const { return vertices_ >= vertex_budget; }
+
+  /// Triangulates every polygon of the group as one batch, then reports and writes file by
+  /// file, in the order the files came.
+  void flush(const Settings& s, const OutputPlan& plan, Totals& totals, Progress& progress) {
+    if (files_.empty()) return;
+    std::vector<double> coordinates;
+    std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
+    coordinates.reserve(2 * vertices_);
+    for (const File& f : files_) {
+      for (const Polygon& polygon : f.polygons) {
+        for (const Ring& ring : polygon) {
+          for (const Point& p : ring) coordinates.insert(coordinates.end(), {p.x, p.y});
+          ring_offsets.push_back(static_cast<std::int64_t>(coordinates.size() / 2));
+        }
+        polygon_offsets.push_back(static_cast<std::int64_t>(ring_offsets.size() - 1));
+      }
+    }
+    RunProfile profile;
+    Options options = s.options;
+    options.profile = &profile;  // each polygon's time, for --stats
+    const BatchTriangulation<> batch =
+        triangulate_batch(PolygonBatch{coordinates, ring_offsets, polygon_offsets}, options);
+    std::size_t p = 0;
+    for (File& f : files_) {
+      try {
+        std::vector<io::TriangulatedPolygon> results;
+        for (std::size_t i = 0; i < f.polygons.size(); ++i, ++p) {
+          results.push_back(report_one(s, f.polygons[i],
+                                       take(batch, profile, p, ring_offsets, polygon_offsets),
+                                       f.name, i, totals, progress));
+          ++totals.polygons;
+        }
+        if (plan.format) write_output(plan, f.name, results);
+      } catch (const std::exception& e) {  // an unwritable output
+        progress.message(e.what());
+        totals.bad_input = true;
+        ++totals.failures;
+      }
+      std::fflush(stdout);
+      progress.advance();
+    }
+    files_.clear();
+    vertices_ = 0;
+  }
+
+ private:
+  struct File {
+    std::string name;
+    std::vector<Polygon> polygons;
+  };
+
+  /// Polygon p's result out of the batch, its indices made local to the polygon again.
+  static PolygonResult take(const BatchTriangulation<>& batch, const RunProfile& profile,
+                            std::size_t p, std::span<const std::int64_t> ring_offsets,
+                            std::span<const std::int64_t> polygon_offsets) {
+    PolygonResult r;
+    const auto base = static_cast<std::uint32_t>(ring_offsets[polygon_offsets[p]]);
+    for (auto t = batch.triangle_offsets[p]; t < batch.triangle_offsets[p + 1]; ++t) {
+      const auto& triangle = batch.triangles[t];
+      r.triangles.push_back({triangle[0] - base, triangle[1] - base, triangle[2] - base});
+    }
+    r.status = batch.status[p];
+    r.diagnostics = std::span(batch.diagnostics)
+                        .subspan(batch.diagnostic_offsets[p],
+                                 batch.diagnostic_offsets[p + 1] - batch.diagnostic_offsets[p]);
+    r.ms = 1000 * profile.phases.front().task_seconds[p];
+    return r;
+  }
+
+  std::vector<File> files_;
+  std::size_t vertices_ = 0;
+};
+
 }  // namespace
 
 int run_triangulate(std::span<const std::string_view> arguments) {
@@ -175,24 +266,23 @@ int run_triangulate(std::span<const std::string_view> arguments) {
   const OutputPlan plan = plan_output(s.output, s.format, files.size());
   Progress progress(files.size());
   Totals totals;
-  Triangulator triangulator;
+  Group group;
   for (const std::string& file : files) {
+    std::vector<Polygon> polygons;
     try {
-      const std::vector<Polygon> polygons = read_input(file, s.read);
-      std::vector<io::TriangulatedPolygon> results;
-      for (std::size_t i = 0; i < polygons.size(); ++i) {
-        results.push_back(run_one(s, triangulator, polygons[i], file, i, totals, progress));
-        ++totals.polygons;
-      }
-      if (plan.format) write_output(plan, file, results);
-    } catch (const std::exception& e) {  // a ParseError naming the place, or an unwritable output
+      polygons = read_input(file, s.read);
+    } catch (const std::exception& e) {        // a ParseError naming the place
+      group.flush(s, plan, totals, progress);  // the messages stay in the order of the files
       progress.message(e.what());
       totals.bad_input = true;
       ++totals.failures;
+      progress.advance();
+      continue;
     }
-    std::fflush(stdout);
-    progress.advance();
+    group.add(file, std::move(polygons));
+    if (group.full()) group.flush(s, plan, totals, progress);
   }
+  group.flush(s, plan, totals, progress);
   progress.summary(totals.polygons, totals.failures);
   if (totals.invalid) return invalid_result;
   return totals.bad_input ? bad_input : success;

@@ -1,0 +1,194 @@
+#include "small_clipper.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+
+#include "ear_test.hpp"
+
+namespace pear::detail {
+namespace {
+
+/// For x > 0: about 2^32 log2(x) plus a constant, monotone in x (the exponent and the top of
+/// the mantissa, as EarQueue::length_bucket reads them, with finer steps).
+std::int64_t log_scale(double x) {
+  return std::bit_cast<std::int64_t>(x) >> 20;
+}
+
+double squared_distance(const Point& u, const Point& w) {
+  const double dx = u.x - w.x, dy = u.y - w.y;
+  return dx * dx + dy * dy;
+}
+
+/// `top`'s order (ear_bucket in ear_test.hpp) without roots or buckets: the squared diagonal
+/// over the fourth root of the shape (twice the area over the squared sides), on the log scale.
+/// `area` is twice the ear's area; the key only counts for convex corners (area > 0).
+std::int64_t top_key(const Point& a, const Point& t, const Point& c, double area) {
+  const double diagonal = squared_distance(a, c);
+  const double sides = squared_distance(a, t) + squared_distance(t, c) + diagonal;
+  const std::int64_t key = 4 * log_scale(diagonal) - log_scale(area) + log_scale(sides);
+  // Zero or overflowing lengths: the ear waits, as the bucket queue's last bucket makes it.
+  return diagonal > 0 && sides < INFINITY ? key : std::numeric_limits<std::int64_t>::max();
+}
+
+/// Whether p is in the closed box of segment a-b: the cheap test before asking whether it lies
+/// on the segment.
+bool in_box(const Point& p, const Point& a, const Point& b) {
+  // One branch for four comparisons (`&`, not `&&`): the answer is mostly no, and predictable.
+  return (std::min(a.x, b.x) <= p.x) & (p.x <= std::max(a.x, b.x)) & (std::min(a.y, b.y) <= p.y) &
+         (p.y <= std::max(a.y, b.y));
+}
+
+}  // namespace
+
+void SmallClipper::load(std::span<const Point> points, std::span<const std::uint32_t> original) {
+  const auto n = static_cast<std::uint32_t>(points.size());
+  b_.pos.assign(points.begin(), points.end());
+  b_.vertex.assign(original.begin(), original.end());
+  b_.prev.resize(n);
+  b_.next.resize(n);
+  key_.resize(n);
+  words_ = (n + 63) / 64;
+  reflex_.words.fill(0);
+  convex_.words.fill(0);
+  candidates_.words.fill(0);
+  for (std::uint32_t i = 0; i < n; ++i) {
+    b_.prev[i] = i == 0 ? n - 1 : i - 1;
+    b_.next[i] = i + 1 == n ? 0 : i + 1;
+  }
+  for (std::uint32_t i = 0; i < n; ++i) refresh(i);
+  remaining_ = n;
+  anchor_ = 0;
+}
+
+/// v's angle is new (it shrank when a neighbour was clipped): convex, reflex or collinear, and
+/// if convex a candidate again with its new key.
+inline void SmallClipper::refresh(std::uint32_t v) {
+  const Point &a = b_.pos[b_.prev[v]], &t = b_.pos[v], &c = b_.pos[b_.next[v]];
+  const double turn = orient2d(a, t, c);
+  // Without branches: whether a corner is convex is as good as random to the branch predictor.
+  const std::uint64_t bit = std::uint64_t{1} << (v % 64);
+  const std::uint64_t convex = bit & (std::uint64_t{0} - (turn > 0));
+  const std::uint64_t reflex = bit & (std::uint64_t{0} - (turn < 0));
+  const std::uint32_t w = v / 64;
+  reflex_.words[w] = (reflex_.words[w] & ~bit) | reflex;
+  convex_.words[w] = (convex_.words[w] & ~bit) | convex;
+  candidates_.words[w] = (candidates_.words[w] & ~bit) | convex;
+  if (keyed_) key_[v] = top_key(a, t, c, turn);
+}
+
+/// detail::is_ear with the reflex nodes from a bit set: no collinear chain along the diagonal
+/// from its ends, and no strictly reflex node that blocks (ear_test.hpp's blocks()).
+bool SmallClipper::is_ear(std::uint32_t v) const {
+  const std::uint32_t p = b_.prev[v], n = b_.next[v];
+  const Point &a = b_.pos[p], &t = b_.pos[v], &c = b_.pos[n];
+  const Point &before = b_.pos[b_.prev[p]], &after = b_.pos[b_.next[n]];
+  if (in_box(after, a, c) && orient2d(a, c, after) == 0 && on_open_segment(after, a, c))
+    return false;
+  if (in_box(before, a, c) && orient2d(a, c, before) == 0 && on_open_segment(before, a, c))
+    return false;
+  const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
+  const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
+  const Point* pos = b_.pos.data();
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    for (std::uint64_t set = reflex_.words[w]; set != 0; set &= set - 1) {
+      const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+      const Point& x = pos[q];
+      const bool boxed =
+          (x.x >= x0) & (x.x <= x1) & (x.y >= y0) & (x.y <= y1) & (q != p) & (q != n);
+      if (!boxed) continue;
+      if (blocks(b_, AllLinks{}, p, v, n, q, a, t, c, x)) return false;
+    }
+  }
+  return true;
+}
+
+void SmallClipper::clip(std::uint32_t v, TriangleList& out) {
+  const std::uint32_t p = b_.prev[v], n = b_.next[v];
+  out.push_back({b_.vertex[p], b_.vertex[v], b_.vertex[n]});
+  b_.link(p, n);
+  convex_.erase(v);
+  candidates_.erase(v);
+  anchor_ = n;
+  --remaining_;
+  refresh(p);
+  refresh(n);
+}
+
+/// The candidate with the smallest key, the lowest node among equals; UINT32_MAX for none.
+std::uint32_t SmallClipper::best_candidate() const {
+  std::uint32_t w = 0;
+  while (w < words_ && candidates_.words[w] == 0) ++w;
+  if (w == words_) return UINT32_MAX;
+  std::uint32_t best = w * 64 + static_cast<std::uint32_t>(std::countr_zero(candidates_.words[w]));
+  std::int64_t best_key = key_[best];
+  for (; w < words_; ++w) {
+    for (std::uint64_t set = candidates_.words[w]; set != 0; set &= set - 1) {
+      const std::uint32_t v = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+      // Selects, not branches: which key is smaller is a coin toss for the predictor.
+      const bool better = key_[v] < best_key;
+      best = better ? v : best;
+      best_key = better ? key_[v] : best_key;
+    }
+  }
+  return best;
+}
+
+/// `top`: the candidate with the smallest key that is an ear. A node found blocked waits until
+/// its angle changes; when none is left, one pass over every convex node (a blocker may have
+/// left) before giving up.
+bool SmallClipper::clip_by_key(TriangleList& out) {
+  bool rescanned = false;
+  while (remaining_ > 3) {
+    const std::uint32_t best = best_candidate();
+    if (best == UINT32_MAX) {
+      if (rescanned) return false;
+      rescanned = true;
+      candidates_ = convex_;
+      continue;
+    }
+    if (!is_ear(best)) {
+      candidates_.erase(best);
+      continue;
+    }
+    rescanned = false;
+    clip(best, out);
+  }
+  return finish(out);
+}
+
+/// `fast`: walk the ring and clip each ear met; a whole lap without a clip means no ear.
+bool SmallClipper::clip_by_walk(TriangleList& out) {
+  std::uint32_t v = anchor_, since_clip = 0;
+  while (remaining_ > 3) {
+    if (convex_.contains(v) && is_ear(v)) {
+      const std::uint32_t n = b_.next[v];
+      clip(v, out);
+      v = n;
+      since_clip = 0;
+    } else {
+      if (++since_clip > remaining_) return false;
+      v = b_.next[v];
+    }
+  }
+  return finish(out);
+}
+
+bool SmallClipper::finish(TriangleList& out) {
+  if (!convex_.contains(anchor_)) return false;
+  out.push_back({b_.vertex[b_.prev[anchor_]], b_.vertex[anchor_], b_.vertex[b_.next[anchor_]]});
+  return true;
+}
+
+bool SmallClipper::run(std::span<const Point> points, std::span<const std::uint32_t> original,
+                       EarHeuristic heuristic, TriangleList& out) {
+  if (points.size() < 3 || points.size() > max_nodes) return false;
+  const std::size_t before = out.size();
+  keyed_ = heuristic == EarHeuristic::top;
+  load(points, original);
+  const bool done = keyed_ ? clip_by_key(out) : clip_by_walk(out);
+  if (!done) out.resize(before);
+  return done;
+}
+
+}  // namespace pear::detail

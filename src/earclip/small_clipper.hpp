@@ -1,0 +1,60 @@
+// Ear clipping for small polygons: one ring of a few hundred vertices at most, simple, no
+// position twice (the pipeline checks this first). The same ear test as the general clipper
+// (ear_test.hpp's blocks()), but the strictly reflex, convex and candidate nodes are bit sets, the
+// next ear is the candidate with the smallest key (a scan of the set), and the key is read from
+// the bits of the doubles instead of computed with roots: a polygon of 20 vertices costs a few
+// thousand instructions where the general clipper's grid, bucket queue and pinch table cost
+// tens of thousands before the first ear (docs/engine.md, "Small polygons").
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "boundary.hpp"
+#include "core/stage.hpp"
+
+namespace pear::detail {
+
+class SmallClipper {
+ public:
+  static constexpr std::size_t max_nodes = 1024;
+
+  /// Clips the counterclockwise ring `points` (original[i]: the caller's index of point i; at
+  /// most max_nodes), appending its n - 2 triangles to `out`. Returns false, with `out` as it
+  /// was, when it finds no ear: the ring was not simple after all (the caller skipped the
+  /// check), and the general engine, with its fallbacks, must take it.
+  bool run(std::span<const Point> points, std::span<const std::uint32_t> original,
+           EarHeuristic heuristic, TriangleList& out);
+
+ private:
+  void load(std::span<const Point> points, std::span<const std::uint32_t> original);
+  bool is_ear(std::uint32_t v) const;
+  void clip(std::uint32_t v, TriangleList& out);
+  void refresh(std::uint32_t v);
+  bool clip_by_key(TriangleList& out);
+  bool clip_by_walk(TriangleList& out);
+  bool finish(TriangleList& out);
+
+  /// One bit per node, in words of 64 kept in place (no allocation, no indirection).
+  struct NodeSet {
+    std::array<std::uint64_t, max_nodes / 64> words;
+    void add(std::uint32_t v) { words[v / 64] |= std::uint64_t{1} << (v % 64); }
+    void erase(std::uint32_t v) { words[v / 64] &= ~(std::uint64_t{1} << (v % 64)); }
+    bool contains(std::uint32_t v) const { return (words[v / 64] >> (v % 64)) & 1; }
+  };
+  std::uint32_t best_candidate() const;
+
+  Boundary b_;
+  std::vector<std::int64_t> key_;  ///< `top`'s order of each convex node (smaller first)
+  NodeSet reflex_;                 ///< strictly reflex nodes still on the boundary
+  NodeSet convex_;                 ///< strictly convex nodes still on the boundary
+  NodeSet candidates_;             ///< convex nodes not found blocked since they last changed
+  bool keyed_ = true;              ///< whether key_ is kept (`top`)
+  std::uint32_t words_ = 0;        ///< words of the sets in use
+  std::uint32_t remaining_ = 0;
+  std::uint32_t anchor_ = 0;  ///< a live node
+};
+
+}  // namespace pear::detail

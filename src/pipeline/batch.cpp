@@ -1,0 +1,187 @@
+// pear::triangulate_batch: polygons cut into chunks of about equal vertex counts, each chunk
+// triangulated by one pooled engine on pear's scheduler, then gathered in polygon order.
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <optional>
+
+#include "engine_pool.hpp"
+#include "pear/batch.hpp"
+#include "pear/scheduler.hpp"
+
+namespace pear {
+namespace detail {
+namespace {
+
+/// Where polygon p's rings and points are, once its offsets were checked.
+struct PolygonSpan {
+  std::int64_t first_ring = 0, end_ring = 0;
+  std::int64_t first_point = 0, end_point = 0;
+};
+
+/// Polygon p's span, or the diagnostic that says what is wrong with its offsets.
+std::optional<Diagnostic> locate_polygon(const PolygonBatch& batch, std::size_t p,
+                                         std::uint64_t max_index, PolygonSpan& span) {
+  const auto rings = static_cast<std::int64_t>(batch.ring_offsets.size()) - 1;
+  const auto points = static_cast<std::int64_t>(batch.coordinates.size() / 2);
+  span.first_ring = batch.polygon_offsets[p];
+  span.end_ring = batch.polygon_offsets[p + 1];
+  if (span.first_ring < 0 || span.end_ring < span.first_ring || span.end_ring > rings)
+    return Diagnostic{Issue::invalid_offsets, 0, 0};
+  if (span.first_ring == span.end_ring) return Diagnostic{Issue::empty_input, 0, 0};
+  for (std::int64_t r = span.first_ring; r <= span.end_ring; ++r) {
+    const std::int64_t offset = batch.ring_offsets[static_cast<std::size_t>(r)];
+    const bool in_order = r == span.first_ring || batch.ring_offsets[r - 1] <= offset;
+    if (offset < 0 || offset > points || !in_order)
+      return Diagnostic{Issue::invalid_offsets, static_cast<std::size_t>(r - span.first_ring), 0};
+  }
+  span.first_point = batch.ring_offsets[static_cast<std::size_t>(span.first_ring)];
+  span.end_point = batch.ring_offsets[static_cast<std::size_t>(span.end_ring)];
+  if (span.end_point > 0 && static_cast<std::uint64_t>(span.end_point - 1) > max_index)
+    return Diagnostic{Issue::index_overflow, 0, 0};
+  return std::nullopt;
+}
+
+/// One chunk's results: its polygons' triangles (batch indices) and diagnostics in order.
+struct ChunkResult {
+  TriangleList triangles;
+  std::vector<Diagnostic> diagnostics;
+  std::size_t flips = 0;
+};
+
+/// What a worker reuses between the polygons of its chunk.
+struct Worker {
+  PooledEngine engine;
+  std::vector<Point> points;
+  std::vector<std::uint32_t> ring_offsets;
+  TriangleList triangles;
+  std::vector<Diagnostic> diagnostics;
+};
+
+Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const Options& options,
+                       ExecutorChoice& where, Worker& w, ChunkResult& chunk) {
+  w.points.clear();
+  for (std::int64_t i = span.first_point; i < span.end_point; ++i)
+    w.points.push_back({batch.coordinates[2 * i], batch.coordinates[2 * i + 1]});
+  w.ring_offsets.clear();
+  for (std::int64_t r = span.first_ring; r <= span.end_ring; ++r)
+    w.ring_offsets.push_back(static_cast<std::uint32_t>(batch.ring_offsets[r] - span.first_point));
+  w.diagnostics.clear();
+  DelaunayStatistics flips;
+  const Status status = w.engine->triangulate(PolygonView{w.points, w.ring_offsets}, options, where,
+                                              w.triangles, w.diagnostics, flips);
+  const auto base = static_cast<std::uint32_t>(span.first_point);
+  for (const auto& t : w.triangles)
+    chunk.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  chunk.diagnostics.insert(chunk.diagnostics.end(), w.diagnostics.begin(), w.diagnostics.end());
+  chunk.flips += flips.flips;
+  return status;
+}
+
+/// Chunk boundaries (polygon indices): about 16 chunks per thread of about equal vertex counts,
+/// none below a few thousand vertices (a task's overhead is a few microseconds).
+std::vector<std::size_t> chunk_bounds(const PolygonBatch& batch, std::size_t polygons,
+                                      std::size_t concurrency) {
+  const auto points_of = [&](std::size_t p) -> std::int64_t {
+    const std::int64_t r0 = batch.polygon_offsets[p], r1 = batch.polygon_offsets[p + 1];
+    const auto rings = static_cast<std::int64_t>(batch.ring_offsets.size()) - 1;
+    if (r0 < 0 || r1 < r0 || r1 > rings) return 0;
+    return std::max<std::int64_t>(0, batch.ring_offsets[r1] - batch.ring_offsets[r0]);
+  };
+  std::int64_t total = 0;
+  for (std::size_t p = 0; p < polygons; ++p) total += points_of(p) + 8;
+  const std::int64_t target =
+      std::max<std::int64_t>(4096, total / static_cast<std::int64_t>(16 * concurrency));
+  std::vector<std::size_t> bounds{0};
+  std::int64_t filled = 0;
+  for (std::size_t p = 0; p < polygons; ++p) {
+    filled += points_of(p) + 8;
+    if (filled >= target && p + 1 < polygons) bounds.push_back(p + 1), filled = 0;
+  }
+  bounds.push_back(polygons);
+  return bounds;
+}
+
+}  // namespace
+
+BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
+                                                    const Options& options,
+                                                    std::uint64_t max_index) {
+  BatchTriangulation<std::uint32_t> result;
+  const std::size_t polygons = batch.polygon_offsets.empty() ? 0 : batch.polygon_offsets.size() - 1;
+  result.status.assign(polygons, Status::ok);
+  result.triangle_offsets.assign(polygons + 1, 0);
+  result.diagnostic_offsets.assign(polygons + 1, 0);
+  if (polygons == 0) return result;
+  std::unique_ptr<Executor> private_executor;
+  ExecutorChoice choice(options, private_executor);
+  Executor* executor = options.threads > max_threads ? nullptr : choice.get();
+  // Inside a polygon, work goes to the same executor (nested tasks), never to a new one.
+  Options per_polygon = options;
+  per_polygon.executor = executor;
+  per_polygon.threads = executor ? 0 : 1;
+  per_polygon.profile = nullptr;
+
+  const std::vector<std::size_t> bounds =
+      chunk_bounds(batch, polygons, executor ? executor->concurrency() : 1);
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<ChunkResult> parts(chunks);
+  std::vector<std::int64_t> triangle_counts(polygons), diagnostic_counts(polygons);
+  // With a profile: one phase whose tasks are the polygons (they run in parallel).
+  std::vector<double> seconds(options.profile ? polygons : 0);
+  const auto run_chunk = [&](std::size_t c) {
+    Worker w;
+    std::unique_ptr<Executor> unused;
+    ExecutorChoice where(per_polygon, unused);
+    for (std::size_t p = bounds[c]; p < bounds[c + 1]; ++p) {
+      const std::size_t triangles_before = parts[c].triangles.size();
+      const std::size_t diagnostics_before = parts[c].diagnostics.size();
+      PolygonSpan span;
+      const auto start = std::chrono::steady_clock::now();
+      if (options.threads > max_threads) {
+        parts[c].diagnostics.push_back({Issue::invalid_options, 0, 0});
+        result.status[p] = Status::invalid_input;
+      } else if (const std::optional<Diagnostic> bad = locate_polygon(batch, p, max_index, span)) {
+        parts[c].diagnostics.push_back(*bad);
+        result.status[p] =
+            bad->issue == Issue::index_overflow ? Status::index_overflow : Status::invalid_input;
+      } else {
+        result.status[p] = triangulate_one(batch, span, per_polygon, where, w, parts[c]);
+      }
+      if (options.profile)
+        seconds[p] =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      triangle_counts[p] = static_cast<std::int64_t>(parts[c].triangles.size() - triangles_before);
+      diagnostic_counts[p] =
+          static_cast<std::int64_t>(parts[c].diagnostics.size() - diagnostics_before);
+    }
+  };
+  if (executor && chunks > 1)
+    parallel_for(*executor, std::size_t{0}, chunks, 1, run_chunk);
+  else
+    for (std::size_t c = 0; c < chunks; ++c) run_chunk(c);
+
+  for (std::size_t p = 0; p < polygons; ++p) {
+    result.triangle_offsets[p + 1] = result.triangle_offsets[p] + triangle_counts[p];
+    result.diagnostic_offsets[p + 1] = result.diagnostic_offsets[p] + diagnostic_counts[p];
+  }
+  result.triangles.resize(static_cast<std::size_t>(result.triangle_offsets.back()));
+  const auto gather = [&](std::size_t c) {
+    std::copy(parts[c].triangles.begin(), parts[c].triangles.end(),
+              result.triangles.begin() + result.triangle_offsets[bounds[c]]);
+  };
+  if (executor && chunks > 1)
+    parallel_for(*executor, std::size_t{0}, chunks, 1, gather);
+  else
+    for (std::size_t c = 0; c < chunks; ++c) gather(c);
+  for (const ChunkResult& part : parts) {
+    result.diagnostics.insert(result.diagnostics.end(), part.diagnostics.begin(),
+                              part.diagnostics.end());
+    result.delaunay_flips += part.flips;
+  }
+  if (options.profile) options.profile->phases = {{"triangulate polygons", std::move(seconds)}};
+  return result;
+}
+
+}  // namespace detail
+}  // namespace pear

@@ -1,0 +1,49 @@
+#include "engine_pool.hpp"
+
+#include <mutex>
+#include <vector>
+
+namespace pear::detail {
+namespace {
+
+/// Engines whose buffers were sized for more vertices than this are not kept.
+constexpr std::size_t kept_footprint = 1 << 16;
+constexpr std::size_t kept_engines = 64;
+
+struct Pool {
+  std::mutex mutex;
+  std::vector<std::unique_ptr<Engine>> engines;
+};
+
+Pool& pool() {
+  static Pool instance;
+  return instance;
+}
+
+}  // namespace
+
+std::unique_ptr<Engine> acquire_engine() {
+  Pool& p = pool();
+  {
+    std::lock_guard lock(p.mutex);
+    if (!p.engines.empty()) {
+      std::unique_ptr<Engine> engine = std::move(p.engines.back());
+      p.engines.pop_back();
+      return engine;
+    }
+  }
+  return std::make_unique<Engine>();
+}
+
+void release_engine(std::unique_ptr<Engine> engine) noexcept {
+  if (!engine || engine->footprint() > kept_footprint) return;
+  Pool& p = pool();
+  try {
+    std::lock_guard lock(p.mutex);
+    if (p.engines.size() < kept_engines) p.engines.push_back(std::move(engine));
+  } catch (...) {
+    // No room to keep it: it is freed, which is all keeping would have saved.
+  }
+}
+
+}  // namespace pear::detail
