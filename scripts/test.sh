@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds pear with its tests and runs them all (meson test). The tests that read ../shared/corpus
-# run when it is there and skip themselves otherwise.
+# run when it is there and skip themselves otherwise (meson: SKIP).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 scripts/setup.sh

@@ -45,10 +45,10 @@ std::vector<Named> corpus(std::size_t max_vertices) {
   const fs::path root = corpus_dir();
   for (const char* folder : {"earcut", "glyphs", "countries", "counties", "synthetic", "coast"}) {
     if (!fs::exists(root / folder)) continue;
-    for (const auto& [file, vertices] : manifest(root / folder)) {
-      if (vertices > max_vertices) continue;
-      const fs::path path = root / folder / file;
-      all.push_back({folder, file, [path] { return load_polygon_file(path); }});
+    for (const pear::corpus::File& file : manifest(root / folder)) {
+      if (file.vertices > max_vertices) continue;
+      const fs::path path = file.path;
+      all.push_back({folder, file.file, [path] { return load_polygon_file(path); }});
     }
   }
   return all;

@@ -1,17 +1,13 @@
 #include "inputs.hpp"
 
-#if PEAR_BENCH_WITH_ZLIB
-#include <zlib.h>
-#endif
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
+#include "corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/io.hpp"
 
@@ -19,31 +15,6 @@ namespace bench {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& path) {
-  std::string text;
-  if (path.extension() == ".gz") {
-#if PEAR_BENCH_WITH_ZLIB
-    gzFile file = gzopen(path.c_str(), "rb");
-    if (file == nullptr) throw std::runtime_error("cannot open " + path.string());
-    char chunk[1 << 16];
-    int n = 0;
-    while ((n = gzread(file, chunk, sizeof chunk)) > 0)
-      text.append(chunk, static_cast<std::size_t>(n));
-    gzclose(file);
-    if (n < 0) throw std::runtime_error("cannot decompress " + path.string());
-#else
-    throw std::runtime_error("built without zlib: cannot read " + path.string());
-#endif
-  } else {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot open " + path.string());
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    text = buffer.str();
-  }
-  return text;
-}
 
 std::string size_label(std::size_t n) {
   if (n % 1'000'000 == 0) return std::to_string(n / 1'000'000) + "M";
@@ -90,14 +61,10 @@ std::string family_of_file(const std::string& stem) {
   return stem.substr(0, stem.find('-'));
 }
 
-bool readable(const std::string& file) {
-#if !PEAR_BENCH_WITH_ZLIB
-  if (file.ends_with(".gz")) {
-    std::fprintf(stderr, "built without zlib: skipping %s\n", file.c_str());
-    return false;
-  }
-#endif
-  return !file.empty();
+bool readable(const fs::path& path) {
+  if (pear::corpus::readable(path)) return true;
+  std::fprintf(stderr, "built without zlib: skipping %s\n", path.c_str());
+  return false;
 }
 
 constexpr const char* default_real_paths =
@@ -107,28 +74,18 @@ constexpr const char* default_real_paths =
 }  // namespace
 
 pear::Polygon load_polygon_file(const fs::path& path) {
-  auto polygons = pear::io::read_geojson(read_text(path), path.string());
+  auto polygons = pear::io::read_geojson(pear::corpus::read_text(path), path.string());
   if (polygons.size() != 1) throw std::runtime_error(path.string() + ": expected one polygon");
   return std::move(polygons[0]);
 }
 
-std::vector<std::pair<std::string, std::size_t>> manifest(const fs::path& dir) {
-  std::ifstream in(dir / "MANIFEST.tsv");
-  std::vector<std::pair<std::string, std::size_t>> files;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    std::string file;
-    std::string vertices;
-    if (std::getline(fields, file, '\t') && std::getline(fields, vertices, '\t'))
-      files.push_back({file, std::strtoull(vertices.c_str(), nullptr, 10)});
-  }
-  return files;
+std::vector<pear::corpus::File> manifest(const fs::path& dir) {
+  return pear::corpus::read_folder(dir.parent_path(), dir.filename().string()).files;
 }
 
 fs::path corpus_dir() {
-  return fs::path(env_text("PEAR_BENCH_CORPUS", PEAR_BENCH_DEFAULT_CORPUS));
+  const char* value = std::getenv("PEAR_BENCH_CORPUS");
+  return value != nullptr && *value != '\0' ? fs::path(value) : pear::corpus::shared_root();
 }
 
 std::vector<Input> inputs() {
@@ -154,18 +111,18 @@ std::vector<Input> inputs() {
     if (vertices <= max_vertices)
       all.push_back({name, family, vertices, [path] { return load_polygon_file(path); }});
   };
-  for (const auto& [file, vertices] : manifest(corpus / "synthetic")) {
-    const std::string stem = file.substr(0, file.find('.'));
-    if (readable(file))
-      add("synthetic/" + stem, family_of_file(stem), vertices, corpus / "synthetic" / file);
+  for (const pear::corpus::File& file : manifest(corpus / "synthetic")) {
+    const std::string stem = file.file.substr(0, file.file.find('.'));
+    if (readable(file.path))
+      add("synthetic/" + stem, family_of_file(stem), file.vertices, file.path);
   }
   std::vector<std::pair<std::string, std::size_t>> real;
   for (const std::string& relative : split(env_text("PEAR_BENCH_PATHS", default_real_paths), ':')) {
     const fs::path path = corpus / relative;
     std::size_t vertices = 0;
-    for (const auto& [file, n] : manifest(path.parent_path()))
-      if (file == path.filename().string()) vertices = n;
-    if (readable(relative)) real.push_back({relative, vertices});
+    for (const pear::corpus::File& file : manifest(path.parent_path()))
+      if (file.file == path.filename().string()) vertices = file.vertices;
+    if (readable(path)) real.push_back({relative, vertices});
   }
   std::stable_sort(real.begin(), real.end(),
                    [](const auto& a, const auto& b) { return a.second < b.second; });
@@ -175,11 +132,11 @@ std::vector<Input> inputs() {
   }
   auto coasts = manifest(corpus / "coast");
   std::sort(coasts.begin(), coasts.end(),
-            [](const auto& a, const auto& b) { return a.second < b.second; });
-  for (const auto& [file, vertices] : coasts) {
-    const std::string name = file.substr(0, file.find("_gshhg"));
-    if (readable(file) && listed("PEAR_BENCH_COASTS", name))
-      add("coast/" + name, "coast", vertices, corpus / "coast" / file);
+            [](const auto& a, const auto& b) { return a.vertices < b.vertices; });
+  for (const pear::corpus::File& file : coasts) {
+    const std::string name = file.file.substr(0, file.file.find("_gshhg"));
+    if (readable(file.path) && listed("PEAR_BENCH_COASTS", name))
+      add("coast/" + name, "coast", file.vertices, file.path);
   }
   return all;
 }

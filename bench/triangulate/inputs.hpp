@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "corpus.hpp"
 #include "pear/geometry.hpp"
 
 namespace bench {
@@ -23,15 +24,15 @@ struct Input {
 /// files; the real polygons of PEAR_BENCH_PATHS (colon-separated, relative to the corpus,
 /// default the largest of earcut/, glyphs/, countries/), small to large; the coast/ files
 /// (PEAR_BENCH_COASTS, comma-separated names such as "eurasia", default all), small to large.
-/// The corpus is PEAR_BENCH_CORPUS, else the build's default; inputs above
+/// The corpus is PEAR_BENCH_CORPUS, else the shared corpus (tests/support/corpus.hpp); inputs above
 /// PEAR_BENCH_MAX_VERTICES are left out. Messages about what is left out go to stderr.
 std::vector<Input> inputs();
 
-/// The corpus directory (PEAR_BENCH_CORPUS, else the build's default).
+/// The corpus directory (PEAR_BENCH_CORPUS, else pear::corpus::shared_root()).
 std::filesystem::path corpus_dir();
 /// One polygon from a GeoJSON file (.json, or .json.gz when built with zlib).
 pear::Polygon load_polygon_file(const std::filesystem::path& path);
-/// The corpus folder's MANIFEST.tsv: file name and vertex count of each file.
-std::vector<std::pair<std::string, std::size_t>> manifest(const std::filesystem::path& dir);
+/// The corpus folder's MANIFEST.tsv rows (none when it cannot be read).
+std::vector<pear::corpus::File> manifest(const std::filesystem::path& dir);
 
 }  // namespace bench

@@ -87,7 +87,7 @@ std::vector<Triangulator> pear_triangulators() {
 
 std::vector<Triangulator> triangulators() {
   std::vector<Triangulator> all = pear_triangulators();
-#ifdef PEAR_BENCH_WITH_CGAL
+#ifdef PEAR_WITH_CGAL_ORACLE
   all.push_back({"cgal_cdt", prepare_cgal_cdt});
 #endif
 #ifdef PEAR_BENCH_WITH_GEOS

@@ -43,7 +43,7 @@ struct Triangulator {
 std::vector<Triangulator> triangulators();
 
 std::vector<Triangulator> pear_triangulators();
-#ifdef PEAR_BENCH_WITH_CGAL
+#ifdef PEAR_WITH_CGAL_ORACLE
 std::unique_ptr<PreparedPolygon> prepare_cgal_cdt(const pear::Polygon& polygon);
 #endif
 #ifdef PEAR_BENCH_WITH_GEOS

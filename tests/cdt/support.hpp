@@ -1,5 +1,6 @@
 // Helpers for the CDT tests: run pear with Options::delaunay under any algorithm, thread count
-// and partition count; check the CDT property with the validator; compare with CGAL's CDT.
+// and partition count; check the CDT property with the validator; where the build has the CGAL
+// oracle (tests/support/cgal_cdt.hpp, PEAR_WITH_CGAL_ORACLE), compare with CGAL's CDT.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -15,7 +16,9 @@
 #include "pear/predicates.hpp"
 #include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
-#include "peers.hpp"  // bench/triangulate: CGAL's CDT with the nesting-level flood fill
+#ifdef PEAR_WITH_CGAL_ORACLE
+#include "cgal_cdt.hpp"
+#endif
 
 namespace pear::testing {
 
@@ -68,6 +71,8 @@ inline void expect_delaunay(const Polygon& polygon, const Triangles& triangles) 
   EXPECT_EQ(report.area_rel_error, 0.0);
 }
 
+#ifdef PEAR_WITH_CGAL_ORACLE
+
 /// The first index of every point's position: touching rings repeat a point under two indices,
 /// and CGAL keeps only one vertex there.
 inline std::vector<std::uint32_t> canonical_indices(const Polygon& polygon) {
@@ -96,35 +101,16 @@ inline Triangles canonical_triangles(const Triangles& triangles,
   return out;
 }
 
-/// CGAL's exact CDT restricted to the polygon (bench/triangulate's peer), canonical and sorted.
+/// CGAL's exact CDT restricted to the polygon, canonical and sorted.
 struct CgalReference {
   std::vector<std::uint32_t> canonical;
   std::vector<Point> points;
   Triangles triangles;
   explicit CgalReference(const Polygon& polygon) : canonical(canonical_indices(polygon)) {
-    // CGAL fails on zero-length constraints: repeated consecutive points go, indices map back.
-    Polygon distinct;
-    std::vector<std::uint32_t> index_of;
-    for (const Ring& ring : polygon) {
-      distinct.emplace_back();
-      for (const Point& p : ring) {
-        if (distinct.back().empty() || !(distinct.back().back() == p)) {
-          distinct.back().push_back(p);
-          index_of.push_back(static_cast<std::uint32_t>(points.size()));
-        }
-        points.push_back(p);
-      }
-      while (distinct.back().size() > 1 && distinct.back().back() == distinct.back().front()) {
-        distinct.back().pop_back();
-        index_of.pop_back();
-      }
-    }
-    const auto cgal = bench::prepare_cgal_cdt(distinct);
-    cgal->triangulate();
-    Triangles original = cgal->triangles();
-    for (auto& t : original)
-      for (auto& corner : t) corner = index_of[corner];
-    triangles = canonical_triangles(original, canonical);
+    for (const Ring& ring : polygon) points.insert(points.end(), ring.begin(), ring.end());
+    CgalCdt cgal(polygon);
+    cgal.triangulate();
+    triangles = canonical_triangles(cgal.triangles(), canonical);
   }
 };
 
@@ -159,8 +145,26 @@ inline void expect_equal_to_cgal(const CgalReference& cgal, const Triangles& our
                              << " triangles not in CGAL's CDT, some have no cocircular neighbour";
 }
 
-inline void expect_equal_to_cgal(const Polygon& polygon, const Triangles& ours) {
-  expect_equal_to_cgal(CgalReference(polygon), ours);
-}
+#endif  // PEAR_WITH_CGAL_ORACLE
+
+/// Checks CDTs of one polygon that came with status ok: the validator's Delaunay check, and with
+/// the CGAL oracle the same triangles as CGAL's CDT (computed once, on the first check).
+class CdtCheck {
+ public:
+  explicit CdtCheck(const Polygon& polygon) : polygon_(polygon) {}
+  void operator()(const Triangles& triangles) {
+    expect_delaunay(polygon_, triangles);
+#ifdef PEAR_WITH_CGAL_ORACLE
+    if (!cgal_) cgal_ = std::make_unique<CgalReference>(polygon_);
+    expect_equal_to_cgal(*cgal_, triangles);
+#endif
+  }
+
+ private:
+  const Polygon& polygon_;
+#ifdef PEAR_WITH_CGAL_ORACLE
+  std::unique_ptr<CgalReference> cgal_;
+#endif
+};
 
 }  // namespace pear::testing

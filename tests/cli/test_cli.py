@@ -2,8 +2,9 @@
 """Runs the built `pear` binary: exit codes 0/1/2/3, the --stats keys, outputs, inputs.
 
 usage: test_cli.py PATH/TO/pear PATH/TO/pear-fault-injection
-(meson passes both executables; PEAR_CORPUS names corpus/). The second is the same tool built
-for tests only, with a fault that PEAR_TEST_DROP_A_TRIANGLE switches on; the shipped one has none.
+(meson passes both executables). The second is the same tool built for tests only, with a fault
+that PEAR_TEST_DROP_A_TRIANGLE switches on; the shipped one has none. The polygons come from the
+bundled corpus/ (tests/support/corpus.py); without it those tests skip, and all of them: exit 77.
 """
 import gzip
 import json
@@ -13,10 +14,13 @@ import sys
 import tempfile
 import unittest
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
+import corpus  # noqa: E402 (tests/support)
+
 PEAR = None
 PEAR_WITH_FAULTS = None
-CORPUS = os.environ.get("PEAR_CORPUS", os.path.join(os.path.dirname(__file__), "..", "..", "corpus"))
-SOUTH_AFRICA = os.path.join(CORPUS, "countries", "south_africa_000.json")
+SOUTH_AFRICA = str(corpus.bundled_root() / "countries" / "south_africa_000.json")
+GLYPHS = str(corpus.bundled_root() / "glyphs")
 
 STATS_KEYS = {"file", "index", "vertices", "holes", "triangles", "status", "algorithm", "threads",
               "cdt", "ms", "min_angle_avg_deg", "dev60_avg_deg"}
@@ -36,13 +40,11 @@ def stats_lines(result):
     return [json.loads(line) for line in result.stdout.splitlines() if line.strip()]
 
 
-def manifest_row(folder, name):
-    with open(os.path.join(CORPUS, folder, "MANIFEST.tsv")) as f:
-        for line in f:
-            fields = line.rstrip("\n").split("\t")
-            if fields[0] == name:
-                return int(fields[1]), int(fields[2])
-    raise KeyError(name)
+def south_africa_counts():
+    """Vertices and holes of SOUTH_AFRICA by its MANIFEST row."""
+    [row] = [f for f in corpus.read_folder(corpus.bundled_root(), "countries")
+             if f.file == "south_africa_000.json"]
+    return row.vertices, row.holes
 
 
 class Files(unittest.TestCase):
@@ -61,11 +63,12 @@ class Files(unittest.TestCase):
 
 class ExitCodes(Files):
     def test_success_with_stats_and_validation(self):
+        corpus.require(SOUTH_AFRICA)
         r = pear("triangulate", SOUTH_AFRICA, "--stats", "--validate")
         self.assertEqual(r.returncode, 0, r.stderr)
         [line] = stats_lines(r)
         self.assertLessEqual(STATS_KEYS | {"valid", "area_rel_error"}, set(line))
-        vertices, holes = manifest_row("countries", "south_africa_000.json")
+        vertices, holes = south_africa_counts()
         self.assertEqual((line["vertices"], line["holes"]), (vertices, holes))
         self.assertEqual(line["status"], "ok")
         self.assertIs(line["valid"], True)
@@ -112,6 +115,7 @@ class ExitCodes(Files):
         self.assertIn("not_simple", r.stderr)
 
     def test_usage_errors(self):
+        corpus.require(SOUTH_AFRICA)
         for args, message in [
             ([], "usage"),
             (["frobnicate"], "unknown command"),
@@ -133,6 +137,7 @@ class ExitCodes(Files):
                 self.assertEqual(r.stdout, "")
 
     def test_invalid_result_is_exit_three(self):
+        corpus.require(SOUTH_AFRICA)
         drop = {"PEAR_TEST_DROP_A_TRIANGLE": "1"}
         r = pear("triangulate", SOUTH_AFRICA, "--validate", "--stats", env=drop,
                  exe=PEAR_WITH_FAULTS)
@@ -160,7 +165,8 @@ class ExitCodes(Files):
 
 class Algorithms(Files):
     def test_every_algorithm_thread_count_and_cdt_is_valid(self):
-        vertices, holes = manifest_row("countries", "south_africa_000.json")
+        corpus.require(SOUTH_AFRICA)
+        vertices, holes = south_africa_counts()
         for algorithm in ["auto", "sequential", "partition-and-cut", "mark-and-cut",
                           "divide-and-conquer"]:
             for threads in ["1", "2", "3"]:
@@ -176,6 +182,7 @@ class Algorithms(Files):
                         self.assertEqual(line["triangles"], vertices + 2 * holes - 2)
 
     def test_output_depends_on_partitions_not_threads(self):
+        corpus.require(SOUTH_AFRICA)
         outputs = []
         for threads in ["1", "2", "4"]:
             out = os.path.join(self.dir.name, "sa-" + threads + ".obj")
@@ -190,6 +197,7 @@ class Algorithms(Files):
 
 class Outputs(Files):
     def triangulate_to(self, name, *extra):
+        corpus.require(SOUTH_AFRICA)
         out = os.path.join(self.dir.name, name)
         r = pear("triangulate", SOUTH_AFRICA, "--stats", "-o", out, *extra)
         self.assertEqual(r.returncode, 0, r.stderr)
@@ -229,8 +237,9 @@ class Outputs(Files):
         self.assertIn("%d triangles" % line["triangles"], text)
 
     def test_directory_output_and_stdout(self):
+        corpus.require(GLYPHS)
         outdir = os.path.join(self.dir.name, "out") + "/"
-        r = pear("triangulate", os.path.join(CORPUS, "glyphs"), "-o", outdir, "--format", "obj")
+        r = pear("triangulate", GLYPHS, "-o", outdir, "--format", "obj")
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertEqual(len(os.listdir(outdir)), 4)
         r = pear("triangulate", "-", "-o", "-", "--format", "geojson", stdin=SQUARE_WITH_HOLE)
@@ -240,7 +249,8 @@ class Outputs(Files):
 
 class Inputs(Files):
     def test_directory_gives_a_line_per_polygon_and_a_summary(self):
-        r = pear("triangulate", "--stats", os.path.join(CORPUS, "glyphs"))
+        corpus.require(GLYPHS)
+        r = pear("triangulate", "--stats", GLYPHS)
         self.assertEqual(r.returncode, 0, r.stderr)
         lines = stats_lines(r)
         self.assertEqual(len(lines), 4)
@@ -273,6 +283,7 @@ class Inputs(Files):
 
 class StatsAndGenerate(Files):
     def test_ear_statistics(self):
+        corpus.require(SOUTH_AFRICA)
         r = pear("stats", "--json", "-", stdin='[[[0,0],[4,0],[4,4],[0,4]]]')
         self.assertEqual(r.returncode, 0, r.stderr)
         [line] = stats_lines(r)
@@ -303,4 +314,4 @@ class StatsAndGenerate(Files):
 if __name__ == "__main__":
     PEAR = os.path.abspath(sys.argv.pop(1))
     PEAR_WITH_FAULTS = os.path.abspath(sys.argv.pop(1))
-    unittest.main(verbosity=2)
+    corpus.main()

@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-#include "../support/corpus.hpp"
+#include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/quality.hpp"
 
@@ -13,14 +13,13 @@ namespace pear {
 namespace {
 
 using testing::check_polygon;
-using testing::CorpusFile;
-using testing::list_corpus;
+using testing::corpus_cases;
 
-class Corpus : public ::testing::TestWithParam<CorpusFile> {};
+class Corpus : public testing::CorpusTest {};
 
 TEST_P(Corpus, TopAndFastAreValid) {
-  const CorpusFile& file = GetParam();
-  const auto polygons = testing::read_corpus_file(file);
+  const corpus::File& file = GetParam();
+  const auto polygons = testing::read_polygons(file);
   ASSERT_FALSE(polygons.empty());
   for (const Polygon& polygon : polygons) {
     for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
@@ -30,23 +29,11 @@ TEST_P(Corpus, TopAndFastAreValid) {
   }
 }
 
-constexpr auto test_name = testing::corpus_test_name;
-
-INSTANTIATE_TEST_SUITE_P(Bundled, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_CORPUS",
-                                                         {"earcut", "countries", "glyphs"})),
-                         test_name);
-INSTANTIATE_TEST_SUITE_P(Shared, Corpus,
-                         ::testing::ValuesIn(list_corpus(
-                             "PEAR_SHARED_CORPUS", {"earcut", "countries", "glyphs", "synthetic"})),
-                         test_name);
-INSTANTIATE_TEST_SUITE_P(SharedCoast, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"coast"})),
-                         test_name);
-INSTANTIATE_TEST_SUITE_P(SharedCounties, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"})),
-                         test_name);
-GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Corpus);
+PEAR_INSTANTIATE_CORPUS(Bundled, Corpus, corpus::bundled_root(), {"earcut", "countries", "glyphs"});
+PEAR_INSTANTIATE_CORPUS(Shared, Corpus, corpus::shared_root(),
+                        {"earcut", "countries", "glyphs", "synthetic"});
+PEAR_INSTANTIATE_CORPUS(SharedCoast, Corpus, corpus::shared_root(), {"coast"});
+PEAR_INSTANTIATE_CORPUS(SharedCounties, Corpus, corpus::shared_root(), {"counties"});
 
 struct Family {
   std::string kind;
@@ -106,9 +93,11 @@ struct MeanQuality {
 // below on the corpus and 14% below on Eurasia), and angles closer to 60 degrees than `fast`.
 TEST(Quality, TopComesWithinTenPercentOfTheCdtOnTheBundledCorpus) {
   MeanQuality top, fast, cdt;
-  for (const CorpusFile& file : list_corpus("PEAR_CORPUS", {"earcut", "countries", "glyphs"})) {
+  for (const corpus::File& file :
+       corpus_cases(corpus::bundled_root(), {"earcut", "countries", "glyphs"})) {
+    PEAR_SKIP_IF_MISSING(file);
     if (!file.valid) continue;
-    for (const Polygon& polygon : testing::read_corpus_file(file)) {
+    for (const Polygon& polygon : testing::read_polygons(file)) {
       top.add(polygon, Options{.heuristic = EarHeuristic::top});
       fast.add(polygon, Options{.heuristic = EarHeuristic::fast});
       cdt.add(polygon, Options{.delaunay = true});

@@ -1,14 +1,12 @@
 // The deterministic families against the shared corpus's synthetic inputs (made by another
 // program), and the random star's distribution against the corpus's star.
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include <gtest/gtest.h>
 
+#include "corpus.hpp"
+#include "missing_data.hpp"
 #include "pear/generate.hpp"
 #include "simple_polygon.hpp"
 
@@ -18,11 +16,8 @@ using pear::Polygon;
 
 /// Reads the corpus's one-line GeoJSON Polygon: the arrays three deep are points. Drops each
 /// ring's closing point.
-Polygon read_corpus_polygon(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  const std::string text = buffer.str();
+Polygon read_corpus_polygon(const pear::corpus::fs::path& path) {
+  const std::string text = pear::corpus::read_text(path);
   Polygon polygon;
   int depth = 0;
   for (std::size_t i = text.find("\"coordinates\""); i < text.size(); ++i) {
@@ -49,14 +44,13 @@ Polygon read_corpus_polygon(const std::filesystem::path& path) {
 class CorpusSynthetic : public ::testing::Test {
  protected:
   void SetUp() override {
-    const char* dir = std::getenv("PEAR_SHARED_CORPUS");
-    if (dir == nullptr || !std::filesystem::exists(std::filesystem::path(dir) / "synthetic"))
-      GTEST_SKIP() << "the shared corpus (PEAR_SHARED_CORPUS) is absent";
-    synthetic_ = std::filesystem::path(dir) / "synthetic";
+    const auto folder = pear::corpus::read_folder(pear::corpus::shared_root(), "synthetic");
+    PEAR_SKIP_IF_MISSING(folder);
+    synthetic_ = folder.dir;
   }
   Polygon corpus(const char* file) const { return read_corpus_polygon(synthetic_ / file); }
 
-  std::filesystem::path synthetic_;
+  pear::corpus::fs::path synthetic_;
 };
 
 /// Same rings, same vertex order, coordinates within `tolerance`.

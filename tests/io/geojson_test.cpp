@@ -2,11 +2,8 @@
 // hole counts their MANIFEST.tsv lists (an independent count made when the corpus was built).
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
-
+#include "corpus.hpp"
+#include "missing_data.hpp"
 #include "pear/io.hpp"
 
 namespace {
@@ -110,37 +107,11 @@ TEST(GeoJson, SmallRingsKeptOnlyWhenAsked) {
   EXPECT_EQ(polygons[0][2].size(), 2u);
 }
 
-// MANIFEST.tsv: file, vertices (closing duplicates excluded), holes, ...
-struct ManifestEntry {
-  std::string file;
-  std::size_t vertices;
-  std::size_t holes;
-};
-
-std::vector<ManifestEntry> manifest(const std::filesystem::path& dir) {
-  std::ifstream in(dir / "MANIFEST.tsv");
-  std::vector<ManifestEntry> entries;
-  std::string line;
-  std::getline(in, line);  // header
-  while (std::getline(in, line)) {
-    std::istringstream fields(line);
-    ManifestEntry e;
-    std::string vertices, holes;
-    std::getline(fields, e.file, '\t');
-    std::getline(fields, vertices, '\t');
-    std::getline(fields, holes, '\t');
-    e.vertices = std::stoul(vertices);
-    e.holes = std::stoul(holes);
-    entries.push_back(e);
-  }
-  return entries;
-}
-
-void expect_manifest_counts(const std::filesystem::path& dir) {
-  const auto entries = manifest(dir);
-  ASSERT_FALSE(entries.empty()) << dir;
-  for (const auto& e : entries) {
-    const auto polygons = pear::io::read_file(dir / e.file, {.keep_small_rings = true});
+/// Each file's vertex and hole counts against its MANIFEST.tsv row.
+void expect_manifest_counts(const pear::corpus::Folder& folder) {
+  ASSERT_FALSE(folder.files.empty()) << folder.dir;
+  for (const auto& e : folder.files) {
+    const auto polygons = pear::io::read_file(e.path, {.keep_small_rings = true});
     ASSERT_EQ(polygons.size(), 1u) << e.file;
     std::size_t vertices = 0;
     for (const auto& ring : polygons[0]) vertices += ring.size();
@@ -150,17 +121,17 @@ void expect_manifest_counts(const std::filesystem::path& dir) {
 }
 
 TEST(GeoJson, BundledCorpusMatchesItsManifest) {
-  const char* corpus = std::getenv("PEAR_CORPUS");
-  if (corpus == nullptr) GTEST_SKIP() << "PEAR_CORPUS not set";
-  for (const char* dir : {"earcut", "countries", "glyphs"})
-    expect_manifest_counts(std::filesystem::path(corpus) / dir);
+  for (const char* name : {"earcut", "countries", "glyphs"}) {
+    const auto folder = pear::corpus::read_folder(pear::corpus::bundled_root(), name);
+    PEAR_SKIP_IF_MISSING(folder);
+    expect_manifest_counts(folder);
+  }
 }
 
 TEST(GeoJson, SharedCountriesMatchTheirManifest) {
-  const char* corpus = std::getenv("PEAR_SHARED_CORPUS");
-  if (corpus == nullptr || !std::filesystem::exists(std::filesystem::path(corpus) / "countries"))
-    GTEST_SKIP() << "shared corpus not present";
-  expect_manifest_counts(std::filesystem::path(corpus) / "countries");
+  const auto folder = pear::corpus::read_folder(pear::corpus::shared_root(), "countries");
+  PEAR_SKIP_IF_MISSING(folder);
+  expect_manifest_counts(folder);
 }
 
 }  // namespace

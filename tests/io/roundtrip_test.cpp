@@ -6,11 +6,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <cstdlib>
-#include <filesystem>
 #include <random>
 #include <sstream>
 
+#include "corpus.hpp"
+#include "missing_data.hpp"
 #include "pear/io.hpp"
 
 namespace {
@@ -156,15 +156,13 @@ TEST(Formats, WktAndPolyReadLikeGeoJson) {
 // Valid real polygons (Natural Earth countries and font glyphs, many holes) come back bit
 // identical through every polygon format.
 TEST(RoundTrip, BundledCorpusThroughEveryFormat) {
-  const char* corpus = std::getenv("PEAR_CORPUS");
-  if (corpus == nullptr) GTEST_SKIP() << "PEAR_CORPUS not set";
   std::size_t files = 0;
-  for (const char* dir : {"countries", "glyphs"}) {
-    for (const auto& entry :
-         std::filesystem::directory_iterator(std::filesystem::path(corpus) / dir)) {
-      if (entry.path().extension() != ".json") continue;
-      SCOPED_TRACE(entry.path().string());
-      const auto polygons = io::read_file(entry.path());
+  for (const char* name : {"countries", "glyphs"}) {
+    const auto folder = pear::corpus::read_folder(pear::corpus::bundled_root(), name);
+    PEAR_SKIP_IF_MISSING(folder);
+    for (const auto& file : folder.files) {
+      SCOPED_TRACE(file.name());
+      const auto polygons = io::read_file(file.path);
       std::ostringstream json, wkt, poly;
       io::write_geojson_polygons(json, polygons);
       io::write_wkt(wkt, polygons);

@@ -8,23 +8,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <memory>
-#include <set>
 #include <string>
 
+#include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
-#include "pear/io.hpp"
 #include "pear/pear.hpp"
 #include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
 
 namespace pear {
 namespace {
-
-namespace fs = std::filesystem;
 
 using Triangles = std::vector<std::array<std::uint32_t, 3>>;
 
@@ -196,55 +189,20 @@ INSTANTIATE_TEST_SUITE_P(Generated, DivideAndConquerFamilies,
                          });
 
 // Every polygon of the shared corpus (skipped when it is absent).
-std::string gunzip(const fs::path& path) {
-  std::string text;
-  const std::string command = "gzip -dc '" + path.string() + "'";
-  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
-  char chunk[1 << 16];
-  for (std::size_t got; pipe && (got = fread(chunk, 1, sizeof chunk, pipe.get())) > 0;)
-    text.append(chunk, got);
-  return text;
-}
-
-std::vector<Polygon> read_corpus_file(const fs::path& path) {
-  if (path.extension() != ".gz") return io::read_file(path, {.keep_small_rings = true});
-  return io::read_text(gunzip(path), io::Format::geojson, path.string(),
-                       {.keep_small_rings = true});
-}
-
-/// The files whose MANIFEST line records a defect (GEOS verdict, not simple, degenerate).
-std::set<std::string> defective_files(const fs::path& dir) {
-  std::set<std::string> defective;
-  std::ifstream manifest(dir / "MANIFEST.tsv");
-  for (std::string line; std::getline(manifest, line);)
-    for (const char* defect : {"GEOS:", "NOT SIMPLE", "DEGENERATE"})
-      if (line.find(defect) != std::string::npos) defective.insert(line.substr(0, line.find('\t')));
-  return defective;
-}
-
 class DivideAndConquerCorpus : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DivideAndConquerCorpus, ValidAndDeterministic) {
-  const char* root = std::getenv("PEAR_SHARED_CORPUS");
-  const fs::path dir = root ? fs::path(root) / GetParam() : fs::path();
-  if (!root || !fs::is_directory(dir)) GTEST_SKIP() << "no shared corpus";
-  std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(dir)) {
-    const std::string name = entry.path().filename().string();
-    if ((name.ends_with(".json") || name.ends_with(".json.gz")) && name != "expected.json")
-      files.push_back(entry.path());
-  }
-  std::sort(files.begin(), files.end());
-  const std::set<std::string> defective = defective_files(dir);
+  const corpus::Folder folder = corpus::read_folder(corpus::shared_root(), GetParam());
+  PEAR_SKIP_IF_MISSING(folder);
   int polygons = 0, fallbacks = 0;
-  for (const fs::path& file : files) {
-    SCOPED_TRACE(file.filename().string());
-    for (const Polygon& polygon : read_corpus_file(file)) {
+  for (const corpus::File& file : folder.files) {
+    PEAR_SKIP_IF_MISSING(file);
+    SCOPED_TRACE(file.file);
+    for (const Polygon& polygon : testing::read_polygons(file)) {
       // Only polygons the sequential engine calls valid: the others have their own tests.
       if (triangulate(polygon, {.algorithm = Algorithm::sequential}).status != Status::ok) continue;
       ++polygons;
-      fallbacks +=
-          expect_valid(polygon, {1, 2, 3, 4, 8}, !defective.contains(file.filename().string()));
+      fallbacks += expect_valid(polygon, {1, 2, 3, 4, 8}, file.valid);
     }
   }
   std::printf("%s: %d polygons, %d of %d runs with 2, 3, 4, 8 partitions fell back\n",

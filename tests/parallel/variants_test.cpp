@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "../support/corpus.hpp"
+#include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/scheduler.hpp"
 
@@ -13,8 +13,6 @@ namespace pear {
 namespace {
 
 using testing::check_polygon;
-using testing::CorpusFile;
-using testing::list_corpus;
 
 constexpr Algorithm variants[] = {Algorithm::partition_and_cut, Algorithm::mark_and_cut};
 
@@ -54,30 +52,20 @@ void check_variants(const Polygon& polygon, bool expect_valid, bool large = fals
   }
 }
 
-class Corpus : public ::testing::TestWithParam<CorpusFile> {};
+class Corpus : public testing::CorpusTest {};
 
 TEST_P(Corpus, EveryVariantIsValidAndDeterministic) {
-  const CorpusFile& file = GetParam();
-  const bool large = file.name.starts_with("coast/");
-  for (const Polygon& polygon : testing::read_corpus_file(file))
+  const corpus::File& file = GetParam();
+  const bool large = file.folder == "coast";
+  for (const Polygon& polygon : testing::read_polygons(file))
     check_variants(polygon, file.valid, large);
 }
 
-INSTANTIATE_TEST_SUITE_P(Bundled, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_CORPUS",
-                                                         {"earcut", "countries", "glyphs"})),
-                         testing::corpus_test_name);
-INSTANTIATE_TEST_SUITE_P(Shared, Corpus,
-                         ::testing::ValuesIn(list_corpus(
-                             "PEAR_SHARED_CORPUS", {"earcut", "countries", "glyphs", "synthetic"})),
-                         testing::corpus_test_name);
-INSTANTIATE_TEST_SUITE_P(SharedCounties, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"counties"}, 7)),
-                         testing::corpus_test_name);
-INSTANTIATE_TEST_SUITE_P(SharedCoast, Corpus,
-                         ::testing::ValuesIn(list_corpus("PEAR_SHARED_CORPUS", {"coast"})),
-                         testing::corpus_test_name);
-GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(Corpus);
+PEAR_INSTANTIATE_CORPUS(Bundled, Corpus, corpus::bundled_root(), {"earcut", "countries", "glyphs"});
+PEAR_INSTANTIATE_CORPUS(Shared, Corpus, corpus::shared_root(),
+                        {"earcut", "countries", "glyphs", "synthetic"});
+PEAR_INSTANTIATE_CORPUS(SharedCounties, Corpus, corpus::shared_root(), {"counties"}, 7);
+PEAR_INSTANTIATE_CORPUS(SharedCoast, Corpus, corpus::shared_root(), {"coast"});
 
 class Synthetic : public ::testing::TestWithParam<std::string> {};
 

@@ -6,16 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <memory>
 #include <numeric>
 #include <random>
 
+#include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
-#include "pear/io.hpp"
 #include "pear/predicates.hpp"
 #include "pipeline/clean.hpp"
 #include "simplicity/simplicity.hpp"
@@ -251,65 +247,32 @@ TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   }
 }
 
-namespace fs = std::filesystem;
-
-struct CorpusFile {
-  fs::path path;
-  bool valid = true;  ///< no GEOS verdict, not marked NOT SIMPLE or DEGENERATE
-  std::size_t vertices = 0;
-};
-
-std::vector<CorpusFile> corpus_files(const fs::path& folder) {
-  std::vector<CorpusFile> files;
-  std::ifstream manifest(folder / "MANIFEST.tsv");
-  std::string line;
-  std::getline(manifest, line);  // the header
-  while (std::getline(manifest, line)) {
-    const auto tab = line.find('\t');
-    CorpusFile file{folder / line.substr(0, tab), true, std::stoul(line.substr(tab + 1))};
-    for (const char* mark : {"GEOS:", "NOT SIMPLE", "DEGENERATE"})
-      file.valid = file.valid && line.find(mark) == std::string::npos;
-    files.push_back(file);
-  }
-  return files;
-}
-
-std::vector<Polygon> read_polygons(const fs::path& path) {
-  if (path.extension() != ".gz")
-    return io::read_file(path, io::ReadOptions{.keep_small_rings = true});
-  std::string text;
-  if (FILE* pipe = popen(("gzip -dc '" + path.string() + "'").c_str(), "r")) {
-    char buffer[1 << 16];
-    for (std::size_t got; (got = fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-      text.append(buffer, got);
-    pclose(pipe);
-  }
-  return io::read_text(text, io::Format::geojson, path.string(),
-                       io::ReadOptions{.keep_small_rings = true});
-}
-
 /// Every corpus polygon up to 400k vertices (the largest coastline, 1.5M, is left to the
 /// engine's coast suite): the automatic check finds nothing in what the MANIFEST calls valid,
 /// agrees with the reference (up to 50k vertices), names an edge that is in a conflict, and
 /// gives the same answer at 1, 2 and 4 threads.
 TEST(Simplicity, CorpusAgreesWithReferenceAndManifest) {
-  const char* root = std::getenv("PEAR_SHARED_CORPUS");
-  if (!root || !fs::is_directory(root)) GTEST_SKIP() << "no shared corpus";
+  std::vector<corpus::Folder> folders;
+  for (const char* name : {"earcut", "countries", "glyphs", "synthetic", "counties", "coast"}) {
+    folders.push_back(corpus::read_folder(corpus::shared_root(), name));
+    PEAR_SKIP_IF_MISSING(folders.back());
+  }
   const Contexts contexts;
   SimplicityCheck check;
   std::size_t checked = 0, found = 0;
-  for (const char* folder : {"earcut", "countries", "glyphs", "synthetic", "counties", "coast"}) {
-    for (const auto& [path, valid, vertices] : corpus_files(fs::path(root) / folder)) {
-      if (vertices > 400'000) continue;
-      for (const Polygon& polygon : read_polygons(path)) {
+  for (const corpus::Folder& folder : folders) {
+    for (const corpus::File& file : folder.files) {
+      if (file.vertices > 400'000) continue;
+      PEAR_SKIP_IF_MISSING(file);
+      for (const Polygon& polygon : testing::read_polygons(file)) {
         const CleanPolygon clean = cleaned(polygon);
         if (clean.ring_count() == 0) continue;
-        SCOPED_TRACE(path.string());
+        SCOPED_TRACE(file.name());
         const auto violation = check.find_violation(clean, contexts.list[0]);
-        EXPECT_TRUE(!valid || !violation) << "edge " << violation.value_or(0);
+        EXPECT_TRUE(!file.valid || !violation) << "edge " << violation.value_or(0);
         const Reference reference(clean);
         // The reference is slow on a long-edged star; above this, the MANIFEST decides.
-        const bool small = vertices <= 50'000;
+        const bool small = file.vertices <= 50'000;
         EXPECT_TRUE(!small || violation.has_value() == reference.smallest_violation().has_value());
         EXPECT_TRUE(!violation || reference.involved(*violation));
         EXPECT_EQ(check.find_violation(clean, contexts.list[1]), violation);
