@@ -1,10 +1,10 @@
-// Ear clipping for small polygons: one ring of a few hundred vertices at most, simple, no
-// position twice (the pipeline checks this first). The same ear test as the general clipper
-// (ear_test.hpp's blocks()), but the strictly reflex, convex and candidate nodes are bit sets, the
-// next ear is the candidate with the smallest key (a scan of the set), and the key is read from
-// the bits of the doubles instead of computed with roots: a polygon of 20 vertices costs a few
-// thousand instructions where the general clipper's grid, bucket queue and pinch table cost
-// tens of thousands before the first ear (docs/engine.md, "Small polygons").
+// Ear clipping for small polygons: one ring of at most 128 vertices, simple, no position
+// twice (the pipeline checks this first). The same ear test as the general clipper
+// (ear_test.hpp's blocks()), but the strictly reflex, convex and candidate nodes are bit sets,
+// the next ear is the candidate with the smallest key (a scan of the set), and the key is read
+// from the bits of the doubles instead of computed with roots: no grid, bucket queue or pinch
+// table to set up. Each step scans the sets, so the cost per vertex grows with n: past about
+// 128 vertices the general clipper is faster (bench_small's crossover; docs/engine.md).
 #pragma once
 
 #include <array>
@@ -19,7 +19,7 @@ namespace pear::detail {
 
 class SmallClipper {
  public:
-  static constexpr std::size_t max_nodes = 1024;
+  static constexpr std::size_t max_nodes = 128;
 
   /// Clips the counterclockwise ring `points` (original[i]: the caller's index of point i; at
   /// most max_nodes), appending its n - 2 triangles to `out`. Returns false, with `out` as it

@@ -113,10 +113,10 @@ class SimplicityCheck {
   std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon, const RunContext& ctx,
                                               Method method = Method::automatic);
 
-  /// For small polygons (a few hundred edges), sequentially: the edges sorted by the left end
-  /// of their boxes, each pair whose boxes meet visited once. Finds every conflict, so the
-  /// violation is the one find_violation reports; `find_crossings` false only looks for
-  /// touching (cheaper: no orientation tests), for runs that skip the check.
+  /// For small polygons (up to a few hundred edges), sequentially: every pair of one ring of at
+  /// most 64 edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
+  /// conflict, so the violation is the one find_violation reports; `find_crossings` false only
+  /// looks for touching (no orientation tests), for runs that skip the check.
   SmallVerdict check_small(const CleanPolygon& polygon, bool find_crossings);
 
  private:

@@ -1,5 +1,5 @@
 // The small-polygon path (src/earclip/small_clipper.cpp, chosen by the pipeline for one ring of
-// at most 1024 vertices): on simple rings of every synthetic family, with collinear runs added,
+// at most 128 vertices): on simple rings of every synthetic family, with collinear runs added,
 // and on rectilinear staircases, it must give n - 2 triangles that the validator accepts, for
 // `top` and `fast`; through the public API its results must be as valid as the general
 // engine's on the same polygons; on rings that are not simple it must end and either say so
@@ -59,6 +59,7 @@ Polygon staircase(int steps) {
 void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
   const CleanPolygon clean = cleaned(polygon);
   ASSERT_EQ(clean.ring_count(), 1u);
+  ASSERT_LE(clean.points.size(), SmallClipper::max_nodes);
   SmallClipper clipper;
   TriangleList out;
   ASSERT_TRUE(clipper.run(clean.points, clean.original, heuristic, out));
@@ -70,7 +71,7 @@ void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
 TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
   int polygons = 0;
   for (std::string_view kind : {"star", "comb", "koch", "hilbert", "random"}) {
-    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 200u, 1000u}) {
+    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u}) {
       for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         Polygon polygon;
         try {
@@ -90,11 +91,11 @@ TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
 }
 
 TEST(SmallClipper, CollinearRunsAndStaircases) {
-  for (int steps : {1, 2, 5, 17, 40}) {
+  for (int steps : {1, 2, 5, 15, 31}) {
     SCOPED_TRACE("staircase " + std::to_string(steps));
     for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
-      expect_valid_clip(staircase(steps), h);
-      expect_valid_clip(with_collinear_runs(staircase(steps), 3), h);
+      expect_valid_clip(staircase(steps), h);  // 2 + 2 steps points
+      if (steps <= 15) expect_valid_clip(with_collinear_runs(staircase(steps), 3), h);  // x4
     }
   }
   // A square with points along every side: every corner's ear has a chain along it.
@@ -142,7 +143,7 @@ TEST(SmallPath, AgreesWithTheGeneralEngine) {
   general.threads = 1;
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 300u, 1024u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
