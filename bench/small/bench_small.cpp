@@ -7,7 +7,8 @@
 //
 //   bench_small [--benchmark_filter=...]      PEAR_BENCH_CORPUS: the corpus (default ../shared)
 //
-// Counters: polygons_per_s (and vertices_per_s). Ratios are read off one run (bench/small/table.py).
+// Counters: polygons_per_s (and vertices_per_s). Ratios are read off one run
+// (bench/small/table.py).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -48,7 +49,8 @@ Folder load_folder(const std::string& name) {
     for (pear::Polygon& polygon :
          pear::io::read_geojson(pear::corpus::read_text(file.path), file.name())) {
       for (const pear::Ring& ring : polygon) {
-        for (const pear::Point& p : ring) folder.coordinates.insert(folder.coordinates.end(), {p.x, p.y});
+        for (const pear::Point& p : ring)
+          folder.coordinates.insert(folder.coordinates.end(), {p.x, p.y});
         folder.ring_offsets.push_back(static_cast<std::int64_t>(folder.coordinates.size() / 2));
         folder.vertices += ring.size();
       }
@@ -85,8 +87,7 @@ void free_function(benchmark::State& state, const Folder* folder) {
 void batch(benchmark::State& state, const Folder* folder, unsigned threads) {
   pear::Options options;
   options.threads = threads;
-  const pear::PolygonBatch view{folder->coordinates, folder->ring_offsets,
-                                folder->polygon_offsets};
+  const pear::PolygonBatch view{folder->coordinates, folder->ring_offsets, folder->polygon_offsets};
   for (auto _ : state) benchmark::DoNotOptimize(pear::triangulate_batch(view, options).size());
   set_rates(state, *folder);
 }
@@ -128,9 +129,9 @@ void crossover(benchmark::State& state, std::string kind, std::size_t n, bool ge
   pear::Triangulator triangulator;
   for (auto _ : state)
     benchmark::DoNotOptimize(triangulator.triangulate(polygon, options).triangles.data());
-  state.counters["ns_per_vertex"] = benchmark::Counter(
-      static_cast<double>(state.iterations() * polygon[0].size()),
-      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.counters["ns_per_vertex"] =
+      benchmark::Counter(static_cast<double>(state.iterations() * polygon[0].size()),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
 void register_benchmarks(std::vector<std::unique_ptr<Folder>>& folders) {
@@ -147,8 +148,8 @@ void register_benchmarks(std::vector<std::unique_ptr<Folder>>& folders) {
     fast.heuristic = pear::EarHeuristic::fast;
     fast.check_simplicity = false;
     benchmark::RegisterBenchmark((prefix + "pear_top").c_str(), per_polygon, folder.get(), top);
-    benchmark::RegisterBenchmark((prefix + "pear_fast_nocheck").c_str(), per_polygon,
-                                 folder.get(), fast);
+    benchmark::RegisterBenchmark((prefix + "pear_fast_nocheck").c_str(), per_polygon, folder.get(),
+                                 fast);
     benchmark::RegisterBenchmark((prefix + "pear_free_function").c_str(), free_function,
                                  folder.get());
     for (unsigned threads : {1u, 2u})

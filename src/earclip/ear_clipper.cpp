@@ -133,6 +133,24 @@ void EarClipper::offer(std::uint32_t v) {
 bool EarClipper::pop(std::uint32_t& v) {
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
+    // `top` jumps across the polygon: ask for the nodes a few pops ahead now, so that their
+    // records are in cache by their turn (memory, not arithmetic, is what `top` waits for):
+    // far ahead the node's own arrays, nearer its neighbours' positions (its links are in by
+    // then).
+    const std::span<const EarQueue::Candidate> rest = queue_.bucket_rest();
+    if (rest.size() >= prefetch_distance) {
+      const std::uint32_t far = rest[rest.size() - prefetch_distance].node;
+      __builtin_prefetch(&b_->pos[far]);
+      __builtin_prefetch(&b_->prev[far]);
+      __builtin_prefetch(&b_->next[far]);
+      __builtin_prefetch(&stamp_[far]);
+      __builtin_prefetch(&alive_[far]);
+    }
+    if (rest.size() >= prefetch_distance / 2) {
+      const std::uint32_t near = rest[rest.size() - prefetch_distance / 2].node;
+      __builtin_prefetch(&b_->pos[b_->prev[near]]);
+      __builtin_prefetch(&b_->pos[b_->next[near]]);
+    }
     if (alive_[top.node] && stamp_[top.node] == top.stamp && is_ear(top.node)) {
       v = top.node;
       return true;
@@ -180,7 +198,8 @@ void EarClipper::clip_ears(std::uint32_t entry) {
   }
 }
 
-bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
+void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                         TriangleList& out) {
   b_ = &b;
   out_ = &out;
   heuristic_ = heuristic;
@@ -191,11 +210,19 @@ bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, T
   queue_.clear(b.size() >= 2 * block_nodes ? (b.size() + block_nodes - 1) / block_nodes : 1);
   pending_.clear();
   classify(entry);
+}
+
+bool EarClipper::clip_prepared(std::uint32_t entry) {
   if (remaining_ < 3) return !best_effort_;
   std::uint32_t start = live(entry);
   // "fast" walks the boundary; where the walk does not pay (below), the queue takes over.
-  if (heuristic == EarHeuristic::top || !walk_ears(start)) clip_ears(start);
+  if (heuristic_ == EarHeuristic::top || !walk_ears(start)) clip_ears(start);
   return !best_effort_;
+}
+
+bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
+  prepare(b, entry, heuristic, out);
+  return clip_prepared(entry);
 }
 
 void EarClipper::enqueue_cycle(std::uint32_t entry) {

@@ -20,6 +20,10 @@ class EarClipper {
   /// indices, counterclockwise) to `out`. Returns false when a best-effort fallback had to be
   /// used: the boundary was not weakly simple, and the result may overlap.
   bool run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
+  /// run() in its two steps, for profiles: dissolving spikes, marking pinches and hashing the
+  /// reflex nodes; then clipping.
+  void prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
+  bool clip_prepared(std::uint32_t entry);
 
   /// Convex, reflex and ear counts of the cycle through `entry` (nothing is clipped).
   EarStatistics statistics(Boundary& b, std::uint32_t entry);
@@ -49,6 +53,7 @@ class EarClipper {
   bool split_along_diagonal(std::uint32_t near);
   void split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part);
   static constexpr std::size_t split_limit = 512;
+  static constexpr std::size_t prefetch_distance = 8;  ///< pops ahead (EarClipper::pop)
   std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);

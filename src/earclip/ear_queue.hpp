@@ -7,6 +7,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace pear::detail {
@@ -61,11 +62,16 @@ class EarQueue {
           word * 64 + static_cast<std::size_t>(std::countr_zero(occupied_[word]));
       out = buckets_[bucket].back();
       buckets_[bucket].pop_back();
+      rest_ = buckets_[bucket];
       if (buckets_[bucket].empty()) occupied_[word] &= ~(std::uint64_t{1} << (bucket % 64));
       return true;
     }
     return false;
   }
+
+  /// What is left of the bucket the last pop took from, the next candidate last: a caller can
+  /// fetch the nodes it will look at soon while it works on this one.
+  std::span<const Candidate> bucket_rest() const { return rest_; }
 
   /// A squared length (or a key of that scale), 16 buckets per power of two; the shortest first.
   static int length_bucket(double squared_length) {
@@ -88,6 +94,7 @@ class EarQueue {
   std::vector<std::uint64_t> occupied_;
   std::uint32_t blocks_ = 1;
   std::size_t lowest_word_ = 0;  ///< no occupied bucket below this word's
+  std::span<const Candidate> rest_;
 };
 
 }  // namespace pear::detail
