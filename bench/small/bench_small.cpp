@@ -7,8 +7,7 @@
 //
 //   bench_small [--benchmark_filter=...]      PEAR_BENCH_CORPUS: the corpus (default ../shared)
 //
-// Counters: polygons_per_s (and vertices_per_s). Ratios are read off one run
-// (bench/small/table.py).
+// Counters: polygons_per_s (and vertices_per_s); quote ratios of benchmarks of one run.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
