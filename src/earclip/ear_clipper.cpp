@@ -133,24 +133,7 @@ void EarClipper::offer(std::uint32_t v) {
 bool EarClipper::pop(std::uint32_t& v) {
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
-    // `top` jumps across the polygon: ask for the nodes a few pops ahead now, so that their
-    // records are in cache by their turn (memory, not arithmetic, is what `top` waits for):
-    // far ahead the node's own arrays, nearer its neighbours' positions (its links are in by
-    // then).
-    const std::span<const EarQueue::Candidate> rest = queue_.bucket_rest();
-    if (rest.size() >= prefetch_distance) {
-      const std::uint32_t far = rest[rest.size() - prefetch_distance].node;
-      __builtin_prefetch(&b_->pos[far]);
-      __builtin_prefetch(&b_->prev[far]);
-      __builtin_prefetch(&b_->next[far]);
-      __builtin_prefetch(&stamp_[far]);
-      __builtin_prefetch(&alive_[far]);
-    }
-    if (rest.size() >= prefetch_distance / 2) {
-      const std::uint32_t near = rest[rest.size() - prefetch_distance / 2].node;
-      __builtin_prefetch(&b_->pos[b_->prev[near]]);
-      __builtin_prefetch(&b_->pos[b_->next[near]]);
-    }
+    prefetch_upcoming(queue_, *b_, stamp_.data(), true);
     if (alive_[top.node] && stamp_[top.node] == top.stamp && is_ear(top.node)) {
       v = top.node;
       return true;

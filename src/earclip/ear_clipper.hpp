@@ -53,11 +53,14 @@ class EarClipper {
   bool split_along_diagonal(std::uint32_t near);
   void split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part);
   static constexpr std::size_t split_limit = 512;
-  static constexpr std::size_t prefetch_distance = 8;  ///< pops ahead (EarClipper::pop)
   std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
+
+ public:
   static constexpr std::uint32_t block_nodes = 32768;  ///< per queue block (EarQueue::clear)
+
+ private:
   bool walk_ears(std::uint32_t& entry);
   void enqueue_cycle(std::uint32_t entry);
 

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "boundary.hpp"
 #include "ear_queue.hpp"
@@ -88,6 +89,28 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
     if (e.node == p || e.node == v || e.node == n) return false;
     return blocks(b, links, p, v, n, e.node, a, t, c, x);
   });
+}
+
+/// `top` pops ears in key order across the whole polygon, and waits for memory, not arithmetic.
+/// The bucket just popped holds the next candidates (last in, first out): fetch the arrays of
+/// the one `distance` pops ahead, and (`follow_links`: only where no other thread writes links)
+/// the neighbours' positions of the one half as far, whose links are in cache by then.
+inline void prefetch_upcoming(const EarQueue& queue, const Boundary& b, const std::uint32_t* stamps,
+                              bool follow_links) {
+  constexpr std::size_t distance = 8;
+  const std::span<const EarQueue::Candidate> rest = queue.bucket_rest();
+  if (rest.size() >= distance) {
+    const std::uint32_t far = rest[rest.size() - distance].node;
+    __builtin_prefetch(&b.pos[far]);
+    __builtin_prefetch(&b.prev[far]);
+    __builtin_prefetch(&b.next[far]);
+    __builtin_prefetch(&stamps[far]);
+  }
+  if (follow_links && rest.size() >= distance / 2) {
+    const std::uint32_t near = rest[rest.size() - distance / 2].node;
+    __builtin_prefetch(&b.pos[b.prev[near]]);
+    __builtin_prefetch(&b.pos[b.next[near]]);
+  }
 }
 
 /// The shape of ear v: twice the area over the sum of the squared sides, 1/sqrt(3) for an

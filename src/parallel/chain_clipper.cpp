@@ -31,7 +31,8 @@ bool ChainClipper::is_ear(std::uint32_t v) const {
 void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
   if (!own(b.prev[v]) || !own(b.next[v]) || !(b.turn(v) > 0)) return;
-  queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]});
+  queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]},
+              (v - first_node_) / EarClipper::block_nodes);
 }
 
 /// Whether popped v is an ear this chain may clip now.
@@ -96,9 +97,17 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
   s_ = &s;
   chain_ = chain;
   heuristic_ = heuristic;
-  queue_.clear();
   Boundary& b = *s.b;
   const std::size_t count = s.order.size();
+  // As the sequential clipper's queue does on large boundaries: key level, then block of
+  // consecutive nodes (over the chain's span of node numbers), then key.
+  std::uint32_t lowest = UINT32_MAX, highest = 0;
+  for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)
+    lowest = std::min(lowest, s.order[i]), highest = std::max(highest, s.order[i]);
+  first_node_ = lowest == UINT32_MAX ? 0 : lowest;
+  const std::uint32_t span = lowest == UINT32_MAX ? 0 : highest - lowest + 1;
+  constexpr std::uint32_t block = EarClipper::block_nodes;
+  queue_.clear(span >= 2 * block ? (span + block - 1) / block : 1);
   scratch_.clear();
   for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)
     if (s.hashed[s.order[i]]) scratch_.push_back(s.order[i]);
@@ -106,6 +115,8 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
   for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count) offer(s.order[i]);
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
+    // Links of nodes near other chains may be written by their tasks: no following them.
+    prefetch_upcoming(queue_, b, s.stamp.data(), false);
     const std::uint32_t v = top.node;
     if (!s.alive[v] || s.stamp[v] != top.stamp || !clippable(v)) continue;
     const std::uint32_t p = b.prev[v], n = b.next[v];

@@ -39,7 +39,8 @@ class ChainClipper {
   std::uint32_t chain_ = 0;
   EarHeuristic heuristic_ = EarHeuristic::top;
   EarQueue queue_;
-  ReflexGrid own_grid_;  ///< this chain's hashed nodes, kept up to date
+  std::uint32_t first_node_ = 0;  ///< the lowest node number of the chain (queue blocks)
+  ReflexGrid own_grid_;           ///< this chain's hashed nodes, kept up to date
   std::vector<std::uint32_t> scratch_;
 };
 
