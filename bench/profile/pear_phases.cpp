@@ -4,7 +4,8 @@
 // tasks' times) and span (its longest task) over the runs, and the whole run's wall time.
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
-//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2t1 mc2 dc2 auto2 cdt2
+//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2t1 pc16t1 mc16t1
+//   dc16t1 mc2 dc2 auto2 cdt2
 //
 // Cache misses per phase: run one configuration under cachegrind (bench/profile/README.md).
 #include <algorithm>
@@ -45,6 +46,13 @@ std::vector<Config> configs() {
   add("pc2", Algorithm::partition_and_cut, 2, false);
   add("pc2t1", Algorithm::partition_and_cut, 1, false);  // the same work on one thread
   all.back().options.partitions = 2;
+  // 16 partitions on one thread: the work/span bound for 16 cores from task times.
+  add("pc16t1", Algorithm::partition_and_cut, 1, false);
+  all.back().options.partitions = 16;
+  add("mc16t1", Algorithm::mark_and_cut, 1, false);
+  all.back().options.partitions = 16;
+  add("dc16t1", Algorithm::divide_and_conquer, 1, false);
+  all.back().options.partitions = 16;
   add("mc2", Algorithm::mark_and_cut, 2, false);
   add("dc2", Algorithm::divide_and_conquer, 2, false);
   add("auto2", Algorithm::automatic, 2, false);

@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace pear::detail {
-void EarClipper::classify(std::uint32_t entry) {
+void EarClipper::classify(std::uint32_t entry, const std::vector<std::uint8_t>* shared) {
   Boundary& b = *b_;
   reflex_.assign(b.size(), 0);
   grid_built_ = false;
@@ -30,7 +30,7 @@ void EarClipper::classify(std::uint32_t entry) {
     dissolve_spikes(u);
     if (remaining_ != before && !best_effort_) best_effort_ = true, best_effort_vertex_ = vertex;
   }
-  mark_pinches();
+  mark_pinches(shared);
   for (std::uint32_t u = 0; u < b.size(); ++u) {
     if (alive_[u] && (pinch_[u] || b.turn(u) < 0)) {
       reflex_[u] = 1;
@@ -41,7 +41,13 @@ void EarClipper::classify(std::uint32_t entry) {
   grid_built_ = true;
 }
 
-void EarClipper::mark_pinches() {
+/// A node that shares its position with one of another cycle, or one that a spike took away,
+/// is marked too: an extra hashed node can only make an ear test stricter.
+void EarClipper::mark_pinches(const std::vector<std::uint8_t>* shared) {
+  if (shared != nullptr && shared->size() == b_->size()) {
+    pinch_ = *shared;
+    return;
+  }
   find_pinches(*b_, alive_, remaining_, pinch_, position_table_);
 }
 
@@ -182,7 +188,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
 }
 
 void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                         TriangleList& out) {
+                         TriangleList& out, const std::vector<std::uint8_t>* shared) {
   b_ = &b;
   out_ = &out;
   heuristic_ = heuristic;
@@ -192,7 +198,7 @@ void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristi
   // caches (see EarQueue::clear).
   queue_.clear(b.size() >= 2 * block_nodes ? (b.size() + block_nodes - 1) / block_nodes : 1);
   pending_.clear();
-  classify(entry);
+  classify(entry, shared);
 }
 
 bool EarClipper::clip_prepared(std::uint32_t entry) {

@@ -22,7 +22,10 @@ class EarClipper {
   bool run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
   /// run() in its two steps, for profiles: dissolving spikes, marking pinches and hashing the
   /// reflex nodes; then clipping.
-  void prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
+  /// `shared`, when given, marks every node whose position another node has (as
+  /// TouchingPoints::shared_positions does): the pinches need not be found again.
+  void prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+               const std::vector<std::uint8_t>* shared = nullptr);
   bool clip_prepared(std::uint32_t entry);
 
   /// Convex, reflex and ear counts of the cycle through `entry` (nothing is clipped).
@@ -32,13 +35,13 @@ class EarClipper {
   std::uint32_t best_effort_vertex() const { return best_effort_vertex_; }
 
  private:
-  void classify(std::uint32_t entry);
+  void classify(std::uint32_t entry, const std::vector<std::uint8_t>* shared = nullptr);
   bool is_ear(std::uint32_t v) const;
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);
-  void mark_pinches();
+  void mark_pinches(const std::vector<std::uint8_t>* shared);
   void drop_reflex(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
   std::uint32_t settle(std::uint32_t v, bool queue);

@@ -58,10 +58,14 @@ void TouchingPoints::untangle(Boundary& b) {
       }
     }
   }
+  shared_.assign(b.size(), 0);
   for (const std::uint32_t head : heads_) {
     if (same_[head] == UINT32_MAX) continue;
     group_.clear();
-    for (std::uint32_t k = head; k != UINT32_MAX; k = same_[k]) group_.push_back(order_[k]);
+    for (std::uint32_t k = head; k != UINT32_MAX; k = same_[k]) {
+      group_.push_back(order_[k]);
+      shared_[order_[k]] = 1;
+    }
     std::sort(group_.begin(), group_.end());
     untangle_point(b, group_.data(), group_.size());
   }

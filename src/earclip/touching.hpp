@@ -18,6 +18,9 @@ class TouchingPoints {
   /// Relinks the passes at every point that several nodes share. Exact; leaves a point alone
   /// when two of its edges overlap or its edges do not alternate in and out.
   void untangle(Boundary& b);
+  /// After untangle: 1 for every node whose position another node has (bridge ends, touching
+  /// rings), what the clipper calls pinches; it need not hash the positions again.
+  const std::vector<std::uint8_t>& shared_positions() const { return shared_; }
 
   /// One node of every cycle of `b` with at least three nodes, the cycle through `first` first;
   /// nodes marked in `skip` (the cycles of holes that could not be joined) are left out.
@@ -41,6 +44,7 @@ class TouchingPoints {
   std::vector<Spoke> spokes_;
   std::vector<std::uint32_t> successor_;
   std::vector<std::uint8_t> seen_;
+  std::vector<std::uint8_t> shared_;
 };
 
 }  // namespace pear::detail

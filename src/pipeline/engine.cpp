@@ -125,8 +125,9 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   }
   if (rest == no_node) return true;
   bool complete = true;
-  ctx.run_serial("classify and hash reflex nodes",
-                 [&] { clipper_.prepare(boundary_, rest, options.heuristic, out); });
+  ctx.run_serial("classify and hash reflex nodes", [&] {
+    clipper_.prepare(boundary_, rest, options.heuristic, out, &touching_.shared_positions());
+  });
   ctx.run_serial("clip sequentially", [&] { complete = clipper_.clip_prepared(rest); });
   best_effort_vertex = clipper_.best_effort_vertex();
   return complete;
