@@ -15,11 +15,8 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
   frame_.fit(lo, hi, polygon.points.size() / 2 + 1);
-  node_cells_.assign(frame_.cell_count(), {});
-  edge_cells_.assign(frame_.cell_count(), {});
-  edge_start_.clear();
-  out_edge_.assign(polygon.points.size() + 2 * rings, UINT32_MAX);
-  insert_ring(polygon.ring_starts[0]);
+  build_grid(static_cast<std::uint32_t>(polygon.points.size()));
+  merge_ring(polygon.ring_starts[0]);
 
   order_.clear();
   for (std::size_t r = 1; r < rings; ++r) order_.push_back(leftmost_node(polygon.ring_starts[r]));
@@ -28,27 +25,63 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
            (boundary.pos[a] == boundary.pos[c] && a < c);
   });
   for (std::uint32_t hole : order_) {
-    // Decide where the hole attaches before its own edges enter the grid, then splice.
+    // Decide where the hole attaches before its own edges count, then splice.
     const Point h = boundary.pos[hole];
     const std::uint32_t touching = node_at(h, boundary.pos[boundary.next[hole]]);
     if (touching != UINT32_MAX) {
-      insert_ring(hole);
+      merge_ring(hole);
       splice_touching(touching, hole);
       continue;
     }
     const RayHit hit = cast_left(h);
     if (hit.touching_edge != UINT32_MAX) {
-      insert_ring(hole);
+      merge_ring(hole);
       splice_into_edge(hit.touching_edge, hole);
     } else if (hit.edge != UINT32_MAX) {
       const std::uint32_t target = node_at(visible_target(h, hit), h);
-      insert_ring(hole);
+      merge_ring(hole);
       splice_bridge(target, hole);
     } else {
       unjoined.push_back(hole);  // nothing to the left: the hole lies outside the outer ring
     }
   }
   return unjoined;
+}
+
+/// Every ring's nodes and edges into the grid by counting: (cell, item) pairs listed once,
+/// cells counted, offsets summed, then filled. Edge v runs from node v (the rings are linked as
+/// cycles, nothing spliced yet).
+void HoleBridger::build_grid(std::uint32_t nodes) {
+  const std::size_t cells = frame_.cell_count();
+  const auto fill = [&](CellLists& lists) {
+    lists.start.assign(cells + 1, 0);
+    lists.head.assign(cells, UINT32_MAX);
+    lists.added.clear();
+    for (const auto& [cell, item] : pairs_) ++lists.start[cell + 1];
+    for (std::size_t c = 0; c < cells; ++c) lists.start[c + 1] += lists.start[c];
+    lists.items.resize(pairs_.size());
+    for (const auto& [cell, item] : pairs_) lists.items[lists.start[cell]++] = item;
+    // Each start[c] now is where cell c ends: shift back by one cell.
+    for (std::size_t c = cells; c > 0; --c) lists.start[c] = lists.start[c - 1];
+    lists.start[0] = 0;
+  };
+  pairs_.clear();
+  for (std::uint32_t v = 0; v < nodes; ++v)
+    pairs_.push_back({static_cast<std::uint32_t>(
+                          frame_.cell(frame_.column(b_->pos[v].x), frame_.row(b_->pos[v].y))),
+                      v});
+  fill(node_cells_);
+  pairs_.clear();
+  for (std::uint32_t v = 0; v < nodes; ++v)
+    frame_.for_each_cell_on_segment(b_->pos[v], b_->pos[b_->next[v]], [&](std::size_t cell) {
+      pairs_.push_back({static_cast<std::uint32_t>(cell), v});
+    });
+  fill(edge_cells_);
+  edge_start_.resize(nodes);
+  out_edge_.resize(nodes);
+  for (std::uint32_t v = 0; v < nodes; ++v) edge_start_[v] = out_edge_[v] = v;
+  node_merged_.assign(nodes, 0);
+  edge_merged_.assign(nodes, 0);
 }
 
 std::uint32_t HoleBridger::leftmost_node(std::uint32_t first) const {
@@ -58,26 +91,32 @@ std::uint32_t HoleBridger::leftmost_node(std::uint32_t first) const {
   return best;
 }
 
+/// A node a bridge adds (a copy): merged at once.
 void HoleBridger::insert_node(std::uint32_t node) {
   const Point& p = b_->pos[node];
-  node_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))].push_back(node);
+  node_cells_.add(frame_.cell(frame_.column(p.x), frame_.row(p.y)), node);
+  if (node_merged_.size() <= node) node_merged_.resize(node + 1, 0);
+  node_merged_[node] = 1;
 }
 
+/// An edge a bridge adds, from `start`: a new id, merged at once.
 std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
   const auto id = static_cast<std::uint32_t>(edge_start_.size());
   edge_start_.push_back(start);
+  edge_merged_.push_back(1);
   if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
   frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]],
-                                  [&](std::size_t cell) { edge_cells_[cell].push_back(id); });
+                                  [&](std::size_t cell) { edge_cells_.add(cell, id); });
   return id;
 }
 
-void HoleBridger::insert_ring(std::uint32_t first) {
+/// The ring through `first` joins the boundary: its nodes and edges count from now on.
+void HoleBridger::merge_ring(std::uint32_t first) {
   std::uint32_t v = first;
   do {
-    insert_node(v);
-    if (out_edge_.size() <= v || out_edge_[v] == UINT32_MAX) insert_edge(v);
+    node_merged_[v] = 1;
+    edge_merged_[v] = 1;
     v = b_->next[v];
   } while (v != first);
 }
@@ -85,13 +124,13 @@ void HoleBridger::insert_ring(std::uint32_t first) {
 /// The merged node at exactly p whose interior sector contains `towards`; UINT32_MAX if no
 /// merged node lies at p. Falls back to any node at p when no sector contains it strictly.
 std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards) const {
-  std::uint32_t any = UINT32_MAX;
-  for (std::uint32_t node : node_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))]) {
-    if (!(b_->pos[node] == p)) continue;
-    if (b_->sector_contains(node, towards)) return node;
+  std::uint32_t any = UINT32_MAX, inside = UINT32_MAX;
+  node_cells_.for_each(frame_.cell(frame_.column(p.x), frame_.row(p.y)), [&](std::uint32_t node) {
+    if (inside != UINT32_MAX || !node_merged_[node] || !(b_->pos[node] == p)) return;
+    if (b_->sector_contains(node, towards)) inside = node;
     if (any == UINT32_MAX) any = node;
-  }
-  return any;
+  });
+  return inside != UINT32_MAX ? inside : any;
 }
 
 HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
@@ -101,17 +140,18 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
   for (int col = frame_.column(h.x); col >= 0; --col) {
     const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
     if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
-    for (std::uint32_t id : edge_cells_[frame_.cell(col, row)]) {
+    edge_cells_.for_each(frame_.cell(col, row), [&](std::uint32_t id) {
+      if (!edge_merged_[id]) return;
       const std::uint32_t s = edge_start_[id];
       Point lo = b_->pos[s], hi = b_->pos[b_->next[s]];
-      if (lo.y == hi.y) continue;  // horizontal: its endpoints end other edges
+      if (lo.y == hi.y) return;  // horizontal: its endpoints end other edges
       if (lo.y > hi.y) std::swap(lo, hi);
-      if (h.y < lo.y || h.y > hi.y) continue;
+      if (h.y < lo.y || h.y > hi.y) return;
       const double side = orient2d(lo, hi, h);
-      if (side > 0) continue;  // the edge lies to the right of h
+      if (side > 0) return;  // the edge lies to the right of h
       if (side == 0) {
         if (!(h == lo) && !(h == hi)) hit.touching_edge = id;
-        continue;
+        return;
       }
       const double x = h.y == lo.y   ? lo.x
                        : h.y == hi.y ? hi.x
@@ -120,7 +160,7 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
         hit.x = std::min(x, h.x);
         hit.edge = id;
       }
-    }
+    });
   }
   return hit;
 }
@@ -149,15 +189,16 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
   const int r0 = frame_.row(std::min(h.y, m.y)), r1 = frame_.row(std::max(h.y, m.y));
   for (int r = r0; r <= r1; ++r) {
     for (int col = c0; col <= c1; ++col) {
-      for (std::uint32_t node : node_cells_[frame_.cell(col, r)]) {
+      node_cells_.for_each(frame_.cell(col, r), [&](std::uint32_t node) {
+        if (!node_merged_[node]) return;
         const Point& v = b_->pos[node];
-        if (v == h || v.x > h.x || (v.y - h.y) * up < 0 || (v.y - m.y) * up > 0) continue;
+        if (v == h || v.x > h.x || (v.y - h.y) * up < 0 || (v.y - m.y) * up > 0) return;
         const double es = orient2d(a, c, v);
-        if (es != 0 && (es > 0) != (edge_side > 0)) continue;  // beyond the hit edge
+        if (es != 0 && (es > 0) != (edge_side > 0)) return;  // beyond the hit edge
         const double hs = orient2d(h, m, v) * up;
-        if (hs < 0) continue;  // on the far side of segment h-M from the ray
+        if (hs < 0) return;  // on the far side of segment h-M from the ray
         if (better(v)) best = v;
-      }
+      });
     }
   }
   return best;
