@@ -182,24 +182,27 @@ SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find
     if (find_crossings && std::min(e, f) < smallest && edges_.conflict(e, f))
       smallest = std::min(e, f);
   };
-  const auto all_pairs = [&] {
+  // Every pair; `one_ring`: edges are numbered along one ring, so e's neighbours are e +- 1
+  // (and 0 and n - 1), which the count leaves out by its bounds instead of looking them up.
+  const auto all_pairs = [&](bool one_ring) {
     for (std::uint32_t e = 0; e + 1 < n; ++e) {
       const EdgeBox& s = boxes[e];
+      const std::uint32_t first = one_ring ? e + 2 : e + 1;
+      const std::uint32_t end = one_ring && e == 0 ? n - 1 : n;
       unsigned meeting = 0;
-      for (std::uint32_t f = e + 1; f < n; ++f) {
+      for (std::uint32_t f = first; f < end; ++f) {
         const EdgeBox& t = boxes[f];
-        meeting += (t.x0 <= s.x1) & (s.x0 <= t.x1) & (t.y0 <= s.y1) & (s.y0 <= t.y1) &
-                   (edges_.next[e] != f) & (edges_.next[f] != e);
+        meeting += (t.x0 <= s.x1) & (s.x0 <= t.x1) & (t.y0 <= s.y1) & (s.y0 <= t.y1);
       }
       if (meeting == 0) continue;
-      for (std::uint32_t f = e + 1; f < n; ++f)
+      for (std::uint32_t f = first; f < end; ++f)
         if (boxes[f].x0 <= s.x1 && s.x0 <= boxes[f].x1) visit(e, f);
     }
   };
   if (polygon.ring_count() == 1 && n <= 64) {
     // All pairs, the box tests without branches: cheaper than any sorting at this size. Only
     // rows with a meeting pair are looked at again.
-    all_pairs();
+    all_pairs(true);
   } else {
     // Every pair of edges from two runs whose x-ranges meet: for each edge of the run that
     // starts first, a window of the other run's edges (both in increasing x).
@@ -218,7 +221,7 @@ SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find
     }
     // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
     // found above): then all pairs, for the smallest edge in any conflict, as the grid gives.
-    if (find_crossings && smallest != SmallestViolation::none) all_pairs();
+    if (find_crossings && smallest != SmallestViolation::none) all_pairs(false);
   }
   if (smallest != SmallestViolation::none) verdict.violation = smallest;
   return verdict;
