@@ -35,7 +35,7 @@ class TouchingPoints {
   };
   void untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
 
-  std::vector<std::uint8_t> slot_count_;    ///< nodes per hash slot, saturating at 2
+  std::vector<std::uint64_t> seen_once_, seen_twice_;  ///< per hash slot: nodes there
   std::vector<std::uint32_t> order_;        ///< nodes whose hash slot another node shares
   std::vector<std::uint32_t> group_slots_;  ///< position -> a candidate there (index in order_)
   std::vector<std::uint32_t> same_;         ///< the next candidate at the same position
