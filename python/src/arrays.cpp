@@ -195,7 +195,8 @@ void raise_for_status(Status status, std::span<const Diagnostic> diagnostics, py
 }
 
 bool is_geometry(py::handle value) {
-  return !py::isinstance<py::array>(value) && py::hasattr(value, "wkb");
+  // On the type: shapely's wkb is a property, and asking the object would write the WKB.
+  return !py::isinstance<py::array>(value) && py::hasattr(py::type::handle_of(value), "wkb");
 }
 
 FlatPolygons geometry_polygons(py::handle geometry) {
@@ -237,6 +238,9 @@ FlatPolygons read_wkb_sequence(py::handle sequence) {
   std::size_t index = 0, offset = 0;
   {
     py::gil_scoped_release release;
+    std::size_t bytes = 0;
+    for (const auto& value : values) bytes += value.size();
+    flat.coordinates.reserve(bytes / 8);  // at most one double per 8 bytes
     try {
       for (std::size_t g = 0; g < values.size(); ++g) read_wkb(values[g], g, flat);
     } catch (const WkbError& e) {

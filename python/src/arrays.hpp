@@ -62,7 +62,7 @@ std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points);
 [[noreturn]] void raise_for_status(Status status, std::span<const Diagnostic> diagnostics,
                                    py::object triangles, const std::string& where = {});
 
-/// Whether `value` is a shapely geometry (it has a `wkb` attribute and is not an array).
+/// Whether `value` is a shapely geometry (its type has a `wkb` attribute; not an array).
 bool is_geometry(py::handle value);
 /// A shapely Polygon or MultiPolygon's polygons, read from its WKB: points in shapely's order
 /// (every ring closed), so indices into them are indices into its coordinates.
