@@ -234,3 +234,15 @@ def test_shapely_multipolygon_and_errors():
     with pytest.raises(ValueError, match="not a Polygon"):
         pear.triangulate(geometry.LineString([(0, 0), (1, 1)]))
     assert pear.triangulate(geometry.Polygon()).shape == (0, 3)
+
+
+def test_the_readme_example_runs():
+    import pathlib
+    import re
+    readme = (pathlib.Path(__file__).resolve().parents[2] / "README.md").read_text()
+    [example] = [b for b in re.findall(r"```python\n(.*?)```", readme, re.S)
+                 if b.startswith("import numpy as np, pear")]
+    scope = {}
+    exec(example, scope)
+    assert scope["two"].ok and len(scope["two"].triangles) == 16
+    assert len(example.strip().splitlines()) == 5
