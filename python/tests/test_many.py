@@ -102,7 +102,9 @@ def test_empty_inputs():
 
 
 def wkb_variants(polygon):
-    """shapely's WKB of polygon in each byte order, with Z, and with an SRID (EWKB)."""
+    """shapely's WKB of polygon in each byte order, with Z, and with an SRID (EWKB); and WKB
+    built here for what shapely 1.8 does not write: ISO M and ZM, EWKB M and ZM, MultiPolygons
+    whose parts differ in byte order."""
     z = geometry.Polygon([(x, y, 7.5) for x, y in polygon.exterior.coords],
                          [[(x, y, -1.0) for x, y in ring.coords] for ring in polygon.interiors])
     yield wkb.dumps(polygon)
@@ -110,24 +112,44 @@ def wkb_variants(polygon):
     yield wkb.dumps(z)
     yield wkb.dumps(z, big_endian=True, srid=4326)
     yield wkb.dumps(polygon, srid=3857)
-    yield iso_wkb_with_m(polygon)
+    yield built_wkb(polygon, ">", 2003, extra=1)                  # ISO M, what ST_AsBinary gives
+    yield built_wkb(polygon, "<", 3003, extra=2)                  # ISO ZM
+    yield built_wkb(polygon, ">", 0x40000003, extra=1)            # EWKB M
+    yield built_wkb(polygon, "<", 0xE0000003, extra=2, srid=4326)  # EWKB ZM with an SRID
 
 
-def iso_wkb_with_m(polygon):
-    """ISO WKB Polygon M (type 2003), big endian: what PostGIS' ST_AsBinary gives for XYM."""
-    out = struct.pack(">BII", 0, 2003, 1 + len(polygon.interiors))
+def built_wkb(polygon, order, code, extra, srid=None):
+    """A WKB Polygon of polygon's rings with `extra` ordinates (99.0) after x and y."""
+    out = struct.pack(order + "BI", 0 if order == ">" else 1, code)
+    if srid is not None:
+        out += struct.pack(order + "I", srid)
+    out += struct.pack(order + "I", 1 + len(polygon.interiors))
     for ring in [polygon.exterior, *polygon.interiors]:
         coords = list(ring.coords)
-        out += struct.pack(">I", len(coords))
-        out += b"".join(struct.pack(">ddd", x, y, 99.0) for x, y in coords)
+        out += struct.pack(order + "I", len(coords))
+        out += b"".join(struct.pack(order + "d" * (2 + extra), x, y, *[99.0] * extra)
+                        for x, y in coords)
     return out
+
+
+def test_multipolygon_parts_in_either_byte_order():
+    parts = [built_wkb(SQUARE, ">", 3, 0), built_wkb(TRIANGLE, "<", 1003, 1)]
+    value = struct.pack("<BII", 1, 6, 2) + b"".join(parts)
+    result = pear.triangulate_many([value])
+    assert result.geometry_offsets.tolist() == [0, 2] and result.ok
+    expected = pear.triangulate(geometry.MultiPolygon([SQUARE, TRIANGLE]))
+    assert np.array_equal(result.geometry_triangles()[0], expected)
+    nested = struct.pack("<BII", 1, 6, 1) + value
+    with pytest.raises(pear.WKBError, match="part 0 is not a Polygon") as caught:
+        pear.triangulate_many([nested])
+    assert (caught.value.index, caught.value.offset) == (0, 9)
 
 
 def test_wkb_forms_read_the_same_coordinates():
     expected = pear.triangulate_many([SQUARE])
     for value in wkb_variants(SQUARE):
         result = pear.triangulate_many([value, bytearray(value)])
-        assert np.array_equal(result.coordinates[:10], expected.coordinates)
+        assert np.array_equal(result.coordinates[:10], expected.coordinates), value[:9]
         assert np.array_equal(result.geometry_triangles()[1], expected.triangles)
 
 
