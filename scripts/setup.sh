@@ -6,7 +6,11 @@ packages=(meson ninja-build g++ pkg-config zlib1g-dev python3)
 if [[ "${1:-}" != minimal ]]; then
   packages+=(libgtest-dev libgmp-dev libbenchmark-dev libcgal-dev libgeos-dev libtbb-dev
              libglu1-mesa-dev python3-matplotlib
-             clang clang-format libclang-rt-14-dev)  # clang's libFuzzer and sanitizer runtimes
+             clang clang-format libclang-rt-14-dev   # clang's libFuzzer and sanitizer runtimes
+             # the Python package (python/) and its tests: shapely, geopandas, Dask, earcut
+             python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
+             python3-shapely python3-geopandas python3-dask python3-distributed
+             python3-mapbox-earcut)
 fi
 missing=()
 for p in "${packages[@]}"; do

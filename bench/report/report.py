@@ -73,8 +73,9 @@ def wins_and_losses(t):
     return "\n".join(lines) + "\n"
 
 
-def reading():
-    path = os.path.join(HERE, "reading.md")
+def hand_written(name):
+    """A section kept in bench/report/ (not regenerated): the reading, the Python package's."""
+    path = os.path.join(HERE, name)
     if not os.path.exists(path):
         return ""
     with open(path) as f:
@@ -112,7 +113,7 @@ def document(run, figs, stem):
         "the constrained Delaunay triangulation).\n",
         tables.summary(t), "\n", tables.versus_peers(t),
         f"\n![Fig. 8]({figs['fig8']})\n" if figs.get("fig8") else "",
-        "\n### Where pear wins and loses\n", wins_and_losses(t), "\n", reading(),
+        "\n### Where pear wins and loses\n", wins_and_losses(t), "\n", hand_written("reading.md"),
         "\n## Speedup of the parallel variants (Fig. 9)\n",
         "Measured: pear's sequential engine (top) time / the variant's time, same run (CDT: "
         "sequential CDT / parallel CDT). Projected: from instrumented runs on one thread with k "
@@ -140,6 +141,7 @@ def document(run, figs, stem):
         "triangulator's own form is not counted.\n",
         tables.memory(t),
         f"\n![memory]({figs['memory']})\n" if figs.get("memory") else "",
+        "\n" + hand_written("python.md"),
         "\n## Every time measured (ms)\n", tables.all_times(t),
         "\n## Skipped or invalid\n", tables.problems(t),
     ]

@@ -1,0 +1,176 @@
+"""pear.triangulate_many: many polygons in one call, and what it returns."""
+import numpy as np
+
+from . import _pear
+from ._types import Status
+
+
+class BatchResult:
+    """The triangulations of a batch, as flat arrays (triangulate_many returns one).
+
+    coordinates      (N, 2) float64: the points the triangles index (the caller's array for
+                     ragged input; for WKB and shapely input, every geometry's coordinates in
+                     shapely's order, rings closed)
+    ring_offsets, polygon_offsets, geometry_offsets
+                     the layout of those points (int64): ring r is points [ring_offsets[r],
+                     ring_offsets[r+1]), polygon p rings [polygon_offsets[p], ...), input
+                     geometry g polygons [geometry_offsets[g], ...) (a MultiPolygon has several,
+                     an empty or missing geometry none)
+    triangles        (M, 3) uint32: counterclockwise triples of indices into coordinates
+    triangle_offsets (P + 1) int64: polygon p's triangles are triangles[triangle_offsets[p]:
+                     triangle_offsets[p + 1]]
+    status           (P,) uint8: each polygon's pear.Status value
+    diagnostic_offsets (P + 1) int64, diagnostic_issue (uint8), diagnostic_ring,
+    diagnostic_vertex (int64): polygon p's findings (diagnostics(p) makes them objects)
+    delaunay_flips   CDT flips over all polygons (delaunay=True)
+    """
+
+    def __init__(self, coordinates, ring_offsets, polygon_offsets, geometry_offsets, arrays):
+        self.coordinates = coordinates
+        self.ring_offsets = ring_offsets
+        self.polygon_offsets = polygon_offsets
+        self.geometry_offsets = geometry_offsets
+        (self.triangles, self.triangle_offsets, self.status, self.diagnostic_offsets,
+         self.diagnostic_issue, self.diagnostic_ring, self.diagnostic_vertex,
+         self.delaunay_flips) = arrays
+
+    def __len__(self):
+        """The number of polygons (a MultiPolygon counts its parts)."""
+        return len(self.status)
+
+    def __repr__(self):
+        counts = np.bincount(self.status, minlength=len(Status))
+        statuses = ", ".join(f"{s.name}={counts[s]}" for s in Status if counts[s])
+        return (f"BatchResult({len(self)} polygons, {len(self.triangles)} triangles"
+                f"{', ' if statuses else ''}{statuses})")
+
+    @property
+    def ok(self):
+        """Whether every polygon has Status.ok."""
+        return bool(np.all(self.status == Status.ok))
+
+    def polygon_triangles(self, p):
+        """Polygon p's triangles, indices into coordinates."""
+        return self.triangles[self.triangle_offsets[p]:self.triangle_offsets[p + 1]]
+
+    def diagnostics(self, p):
+        """Polygon p's findings as pear.Diagnostic objects (ring counts within the polygon)."""
+        span = range(self.diagnostic_offsets[p], self.diagnostic_offsets[p + 1])
+        return [_pear.describe_issue(int(self.diagnostic_issue[d]), int(self.diagnostic_ring[d]),
+                                     int(self.diagnostic_vertex[d])) for d in span]
+
+    @property
+    def geometry_triangle_offsets(self):
+        """(G + 1) int64: geometry g's triangles are triangles[offsets[g]:offsets[g + 1]]."""
+        return self.triangle_offsets[self.geometry_offsets]
+
+    @property
+    def geometry_status(self):
+        """(G,) uint8: each input geometry's worst polygon status (ok for an empty one)."""
+        starts = self.geometry_offsets[:-1]
+        has_parts = self.geometry_offsets[1:] > starts
+        worst = np.zeros(len(starts), dtype=np.uint8)
+        if len(self.status):
+            worst[has_parts] = np.maximum.reduceat(self.status, starts[has_parts])
+        return worst
+
+    def geometry_point_offsets(self):
+        """(G + 1) int64: geometry g's points are coordinates[offsets[g]:offsets[g + 1]]."""
+        rings = np.take(self.polygon_offsets, self.geometry_offsets, mode="clip")
+        return np.take(self.ring_offsets, rings, mode="clip")  # clipped: offsets may be bad
+
+    def local_triangles(self):
+        """The triangles with each one's indices counted from its geometry's first point: for
+        WKB and shapely input, indices into that geometry's own coordinates."""
+        first_point = self.geometry_point_offsets()[:-1]
+        per_geometry = np.diff(self.geometry_triangle_offsets)
+        shift = np.repeat(first_point, per_geometry).astype(np.uint32)
+        return self.triangles - shift[:, None]
+
+    def geometry_triangles(self):
+        """A list with each geometry's (k, 3) uint32 triangles, indices into its coordinates."""
+        if len(self.geometry_offsets) < 2:
+            return []
+        return np.split(self.local_triangles(), self.geometry_triangle_offsets[1:-1])
+
+    def check(self):
+        """Raises what pear.triangulate would for the first polygon that is not ok."""
+        bad = np.flatnonzero(self.status != Status.ok)
+        if len(bad) == 0:
+            return self
+        p = int(bad[0])
+        diagnostics = self.diagnostics(p)
+        first = next((d for d in diagnostics if d.is_error or d.issue == "not_simple"), None)
+        message = f"polygon {p}: {first if first is not None else Status(self.status[p]).name}"
+        from ._types import InvalidInputError, NotSimpleError
+        if self.status[p] == Status.not_simple:
+            raise NotSimpleError(message, self.polygon_triangles(p), diagnostics)
+        raise InvalidInputError(message, first.issue if first else "invalid_input",
+                                first.ring if first else 0, first.vertex if first else 0,
+                                diagnostics)
+
+
+def _wkb_writer():
+    """One shapely geometry to WKB: shapely 1.8's writer made once per batch (half the time of
+    .wkb, which makes a writer per geometry), else .wkb. A writer is not shared between calls:
+    GEOS writers are not thread-safe."""
+    try:
+        from shapely.geos import WKBWriter, lgeos  # shapely 1.8
+        return WKBWriter(lgeos).write
+    except ImportError:
+        return lambda geometry: geometry.wkb
+
+
+def _wkb_values(geometries):
+    """WKB bytes (or None) for each of a sequence of shapely geometries, WKB values or None;
+    what is none of these is passed on for the module to name."""
+    # hasattr on the type: shapely's wkb is a property, asking a geometry writes its WKB.
+    if isinstance(geometries, (bytes, bytearray)) or hasattr(type(geometries), "wkb"):
+        geometries = [geometries]
+    if not isinstance(geometries, (list, np.ndarray)):
+        geometries = list(geometries)
+    # WKB goes to the module as it is (it names any element that is not WKB): a Python test of
+    # every element would cost a tenth of a small polygon's triangulation.
+    first = next((v for v in geometries if v is not None), None)
+    if first is None or isinstance(first, (bytes, bytearray)):
+        return geometries
+    write = _wkb_writer()
+    return [write(v) if hasattr(type(v), "wkb") else v for v in geometries]
+
+
+def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_offsets=None, *,
+                     algorithm="automatic", heuristic="top", delaunay=False, threads=0,
+                     partitions=0, check_simplicity=True):
+    """Triangulates many polygons in one call, in parallel over the polygons on pear's
+    scheduler, the GIL released; returns a BatchResult. Never raises for bad geometry: each
+    polygon has a status (BatchResult.check() raises as triangulate would).
+
+    data: an (N, 2) float64 array with ring_offsets and polygon_offsets (shapely 2's
+    to_ragged_array layout: ``triangulate_many(coords, *offsets)``; geometry_offsets for
+    MultiPolygons); or a sequence of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or
+    MultiPolygon, any byte order, ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.
+    Options as for triangulate; threads=0 uses every hardware thread.
+    """
+    options = dict(algorithm=algorithm, heuristic=heuristic, delaunay=delaunay, threads=threads,
+                   partitions=partitions, check_simplicity=check_simplicity)
+    if ring_offsets is None:
+        if polygon_offsets is not None or geometry_offsets is not None:
+            raise TypeError("polygon_offsets and geometry_offsets go with ring_offsets")
+        coords, ring_offsets, polygon_offsets, geometry_offsets = _pear.read_wkb(_wkb_values(data))
+    else:
+        if polygon_offsets is None:
+            raise TypeError("ring_offsets needs polygon_offsets (one polygon: [0, rings])")
+        coords = data
+        ring_offsets = np.asarray(ring_offsets, dtype=np.int64)
+        polygon_offsets = np.asarray(polygon_offsets, dtype=np.int64)
+        polygons = max(len(polygon_offsets) - 1, 0)
+        if geometry_offsets is None:
+            geometry_offsets = np.arange(polygons + 1, dtype=np.int64)
+        geometry_offsets = np.asarray(geometry_offsets, dtype=np.int64)
+        if (geometry_offsets.ndim != 1 or len(geometry_offsets) == 0 or geometry_offsets[0] != 0
+                or geometry_offsets[-1] != polygons or np.any(np.diff(geometry_offsets) < 0)):
+            raise ValueError(f"geometry_offsets must rise from 0 to the {polygons} polygons")
+    arrays = _pear.triangulate_batch(coords, ring_offsets, polygon_offsets, **options)
+    if not isinstance(coords, np.ndarray):
+        coords = np.asarray(coords, dtype=np.float64)
+    return BatchResult(coords, ring_offsets, polygon_offsets, geometry_offsets, arrays)

@@ -1,0 +1,277 @@
+// numpy arrays in and out, Options by name, and pear's exceptions raised from C++.
+#include "arrays.hpp"
+
+#include <cstring>
+#include <string>
+
+namespace pear::python {
+
+Options make_options(const OptionArguments& arguments) {
+  const auto [algorithm, heuristic, delaunay, check_simplicity, threads, partitions] = arguments;
+  Options options;
+  if (algorithm == "automatic" || algorithm == "auto")
+    options.algorithm = Algorithm::automatic;
+  else if (algorithm == "sequential")
+    options.algorithm = Algorithm::sequential;
+  else if (algorithm == "partition_and_cut")
+    options.algorithm = Algorithm::partition_and_cut;
+  else if (algorithm == "mark_and_cut")
+    options.algorithm = Algorithm::mark_and_cut;
+  else if (algorithm == "divide_and_conquer")
+    options.algorithm = Algorithm::divide_and_conquer;
+  else
+    throw py::value_error("algorithm '" + std::string(algorithm) +
+                          "' is not one of automatic, sequential, partition_and_cut, "
+                          "mark_and_cut, divide_and_conquer");
+  if (heuristic == "top")
+    options.heuristic = EarHeuristic::top;
+  else if (heuristic == "fast")
+    options.heuristic = EarHeuristic::fast;
+  else
+    throw py::value_error("heuristic '" + std::string(heuristic) + "' is not one of top, fast");
+  if (threads < 0 || threads > long{max_threads})
+    throw py::value_error("threads " + std::to_string(threads) + " is not between 0 (all) and " +
+                          "pear's limit of " + std::to_string(max_threads));
+  if (partitions < 0 || partitions > long{max_threads})
+    throw py::value_error("partitions " + std::to_string(partitions) +
+                          " is not between 0 (the thread count) and " +
+                          std::to_string(max_threads));
+  options.delaunay = delaunay;
+  options.threads = static_cast<unsigned>(threads);
+  options.partitions = static_cast<unsigned>(partitions);
+  options.check_simplicity = check_simplicity;
+  return options;
+}
+
+Coordinates as_coordinates(py::handle coords, const char* name) {
+  // The common case first: an array as it is needed is borrowed, not converted.
+  auto array = py::isinstance<Coordinates>(coords) ? py::reinterpret_borrow<Coordinates>(coords)
+                                                   : Coordinates::ensure(coords);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error(std::string(name) + " must be an (N, 2) array of numbers, not " +
+                         std::string(py::str(py::type::handle_of(coords).attr("__name__"))));
+  }
+  if (array.ndim() != 2 || array.shape(1) != 2) {
+    std::string shape;
+    for (py::ssize_t d = 0; d < array.ndim(); ++d)
+      shape += (d ? ", " : "") + std::to_string(array.shape(d));
+    throw py::value_error(std::string(name) + " must have shape (N, 2), not (" + shape + ")");
+  }
+  return array;
+}
+
+py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> as_offsets(py::handle values,
+                                                                                const char* name) {
+  auto array = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(values);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error(std::string(name) + " must be a 1-D array of integers");
+  }
+  if (array.ndim() != 1) throw py::value_error(std::string(name) + " must be one-dimensional");
+  return array;
+}
+
+namespace {
+/// Appends ring_ends' entries to offsets (which holds the leading 0), checking each.
+template <class Values>
+void append_ring_ends(const Values& values, py::ssize_t count, std::size_t n,
+                      std::vector<std::uint32_t>& offsets) {
+  for (py::ssize_t i = 0; i < count; ++i) {
+    const auto value = static_cast<std::int64_t>(values(i));
+    if (value < offsets.back() || value > static_cast<std::int64_t>(n))
+      throw py::value_error("ring_ends[" + std::to_string(i) + "] = " + std::to_string(value) +
+                            (value < offsets.back()
+                                 ? " is below the entry before it"
+                                 : " is past the " + std::to_string(n) + " points"));
+    if (i == 0 && value == 0) continue;  // ring offsets: the leading 0 is already there
+    offsets.push_back(static_cast<std::uint32_t>(value));
+  }
+}
+
+/// Reads a 1-D integer array of element type T in place; false when ring_ends is not one.
+template <class T>
+bool append_if_array_of(py::handle ring_ends, std::size_t n, std::vector<std::uint32_t>& offsets) {
+  if (!py::isinstance<py::array_t<T, 0>>(ring_ends)) return false;
+  const auto array = py::reinterpret_borrow<py::array_t<T, 0>>(ring_ends);
+  if (array.ndim() != 1) return false;
+  const auto values = array.template unchecked<1>();
+  append_ring_ends([&](py::ssize_t i) { return values(i); }, array.shape(0), n, offsets);
+  return true;
+}
+}  // namespace
+
+void ring_offsets_from(py::handle ring_ends, std::size_t n, std::vector<std::uint32_t>& offsets) {
+  offsets.clear();
+  offsets.push_back(0);
+  // Arrays of the usual index types are read as they are (mapbox_earcut's are uint32).
+  if (!ring_ends.is_none() && !append_if_array_of<std::uint32_t>(ring_ends, n, offsets) &&
+      !append_if_array_of<std::int64_t>(ring_ends, n, offsets) &&
+      !append_if_array_of<std::int32_t>(ring_ends, n, offsets)) {
+    const auto ends = as_offsets(ring_ends, "ring_ends");
+    const std::int64_t* values = ends.data();
+    append_ring_ends([&](py::ssize_t i) { return values[i]; }, ends.shape(0), n, offsets);
+  }
+  if (offsets.back() != n) offsets.push_back(static_cast<std::uint32_t>(n));
+}
+
+template <class T>
+py::array vector_array(std::vector<T>&& values) {
+  auto* owned = new std::vector<T>(std::move(values));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array_t<T>(static_cast<py::ssize_t>(owned->size()), owned->data(), owner);
+}
+template py::array vector_array(std::vector<std::int64_t>&&);
+template py::array vector_array(std::vector<std::uint8_t>&&);
+template py::array vector_array(std::vector<double>&&);
+
+py::array triangles_array(std::vector<Triangle>&& triangles) {
+  const auto count = static_cast<py::ssize_t>(triangles.size());
+  // Below this a copy costs less than a second Python object to own the vector.
+  if (triangles.size() < 4096) {
+    py::array_t<std::uint32_t> array({count, py::ssize_t{3}});
+    if (count > 0) std::memcpy(array.mutable_data(), triangles.data(), triangles.size() * 12);
+    return array;
+  }
+  auto* owned = new std::vector<Triangle>(std::move(triangles));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<Triangle>*>(p); });
+  return py::array_t<std::uint32_t>({count, py::ssize_t{3}},
+                                    reinterpret_cast<const std::uint32_t*>(owned->data()), owner);
+}
+
+std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points) {
+  using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+  auto array = Indices::ensure(triangles);
+  if (!array) {
+    PyErr_Clear();
+    throw py::type_error("triangles must be an (M, 3) array of integers");
+  }
+  if (array.ndim() != 2 || array.shape(1) != 3)
+    throw py::value_error("triangles must have shape (M, 3)");
+  std::vector<Triangle> out(static_cast<std::size_t>(array.shape(0)));
+  const std::int64_t* values = array.data();
+  for (std::size_t i = 0; i < 3 * out.size(); ++i) {
+    if (values[i] < 0 || static_cast<std::uint64_t>(values[i]) >= points)
+      throw py::value_error("triangles[" + std::to_string(i / 3) + "] has index " +
+                            std::to_string(values[i]) + ", not one of the " +
+                            std::to_string(points) + " points");
+    out[i / 3][i % 3] = static_cast<std::uint32_t>(values[i]);
+  }
+  return out;
+}
+
+namespace {
+py::object errors_module() {
+  return py::module_::import("pear._types");
+}
+
+py::list diagnostics_list(std::span<const Diagnostic> diagnostics) {
+  py::list list;
+  for (const Diagnostic& d : diagnostics) list.append(py::cast(d));
+  return list;
+}
+}  // namespace
+
+void raise_for_status(Status status, std::span<const Diagnostic> diagnostics, py::object triangles,
+                      const std::string& where) {
+  const Diagnostic* first = diagnostics.empty() ? nullptr : &diagnostics.front();
+  for (const Diagnostic& d : diagnostics)
+    if (d.is_error() || (status == Status::not_simple && d.issue == Issue::not_simple)) {
+      first = &d;
+      break;
+    }
+  const std::string message = where + (first ? describe(*first) : std::string(to_string(status)));
+  py::object error;
+  if (status == Status::not_simple)
+    error =
+        errors_module().attr("NotSimpleError")(message, triangles, diagnostics_list(diagnostics));
+  else
+    error = errors_module().attr("InvalidInputError")(
+        message, first ? to_string(first->issue) : to_string(status),
+        first ? py::int_(first->ring) : py::int_(0), first ? py::int_(first->vertex) : py::int_(0),
+        diagnostics_list(diagnostics));
+  PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(error.ptr())), error.ptr());
+  throw py::error_already_set();
+}
+
+bool is_geometry(py::handle value) {
+  // On the type: shapely's wkb is a property, and asking the object would write the WKB.
+  return !py::isinstance<py::array>(value) && py::hasattr(py::type::handle_of(value), "wkb");
+}
+
+FlatPolygons geometry_polygons(py::handle geometry) {
+  const py::bytes wkb = geometry.attr("wkb");
+  const std::string_view bytes = wkb;
+  FlatPolygons flat;
+  try {
+    read_wkb(std::as_bytes(std::span(bytes.data(), bytes.size())), 0, flat);
+  } catch (const WkbError& e) {
+    throw py::value_error(std::string(py::str(geometry.attr("geom_type"))) +
+                          " is not a Polygon or MultiPolygon: " + e.what());
+  }
+  return flat;
+}
+
+FlatPolygons read_wkb_sequence(py::handle sequence) {
+  // Pointers into the bytes objects, which `held` keeps alive (the sequence may be a generator).
+  std::vector<std::span<const std::byte>> values;
+  std::vector<py::object> held;
+  for (py::handle item : py::iter(sequence)) {
+    held.push_back(py::reinterpret_borrow<py::object>(item));
+    if (item.is_none()) {
+      values.emplace_back();
+    } else if (PyBytes_Check(item.ptr())) {
+      values.push_back(std::as_bytes(std::span(
+          PyBytes_AS_STRING(item.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(item.ptr())))));
+    } else if (PyByteArray_Check(item.ptr())) {
+      values.push_back(
+          std::as_bytes(std::span(PyByteArray_AS_STRING(item.ptr()),
+                                  static_cast<std::size_t>(PyByteArray_GET_SIZE(item.ptr())))));
+    } else {
+      throw py::type_error("geometry " + std::to_string(values.size()) +
+                           " is not WKB (bytes, bytearray or None) but " +
+                           std::string(py::str(py::type::handle_of(item).attr("__name__"))));
+    }
+  }
+  FlatPolygons flat;
+  std::string error;
+  std::size_t index = 0, offset = 0;
+  {
+    py::gil_scoped_release release;
+    std::size_t bytes = 0;
+    for (const auto& value : values) bytes += value.size();
+    flat.coordinates.reserve(bytes / 8);  // at most one double per 8 bytes
+    try {
+      for (std::size_t g = 0; g < values.size(); ++g) read_wkb(values[g], g, flat);
+    } catch (const WkbError& e) {
+      error = e.what(), index = e.geometry, offset = e.offset;
+    }
+  }
+  if (!error.empty()) {
+    const py::object e = py::module_::import("pear._types").attr("WKBError")(error, index, offset);
+    PyErr_SetObject(reinterpret_cast<PyObject*>(Py_TYPE(e.ptr())), e.ptr());
+    throw py::error_already_set();
+  }
+  return flat;
+}
+
+py::tuple flat_arrays(FlatPolygons&& flat) {
+  const auto points = static_cast<py::ssize_t>(flat.coordinates.size() / 2);
+  auto* owned = new std::vector<double>(std::move(flat.coordinates));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  py::array coordinates = py::array_t<double>({points, py::ssize_t{2}}, owned->data(), owner);
+  return py::make_tuple(coordinates, vector_array(std::move(flat.ring_offsets)),
+                        vector_array(std::move(flat.polygon_offsets)),
+                        vector_array(std::move(flat.geometry_offsets)));
+}
+
+py::object status_object(Status status) {
+  // pear.Status's members, looked up once (kept for the life of the process).
+  static PyObject* members[4] = {};
+  const auto code = static_cast<std::size_t>(status);
+  if (!members[code])
+    members[code] = py::module_::import("pear._types").attr("Status")(code).release().ptr();
+  return py::reinterpret_borrow<py::object>(members[code]);
+}
+
+}  // namespace pear::python

@@ -1,0 +1,82 @@
+// What the module's functions share: numpy arrays in and out, Options from keyword arguments,
+// shapely geometries through their WKB, and pear's exceptions (pear/_types.py) raised from C++.
+#pragma once
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "pear/pear.hpp"
+#include "wkb.hpp"
+
+namespace pear::python {
+
+namespace py = pybind11;
+
+using Coordinates = py::array_t<double, py::array::c_style | py::array::forcecast>;
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// The keyword arguments every triangulating function takes, as given.
+struct OptionArguments {
+  std::string_view algorithm = "automatic", heuristic = "top";
+  bool delaunay = false, check_simplicity = true;
+  long threads = 0, partitions = 0;
+};
+/// Options from them. Unknown names raise ValueError listing the known ones; counts out of
+/// range raise ValueError.
+Options make_options(const OptionArguments& arguments);
+
+/// `coords` as a C-contiguous (N, 2) float64 array: the caller's own array when it is one
+/// already (no copy), else numpy's conversion of it. Raises ValueError for another shape and
+/// TypeError for what numpy cannot convert.
+Coordinates as_coordinates(py::handle coords, const char* name = "coords");
+
+/// The ring offsets (0, ..., n) of a polygon of n points from `ring_ends`: None (one ring), ring
+/// offsets, earcut's ring ends (mapbox_earcut: each ring's end, the last n) or earcut.js' hole
+/// indices (each hole's start): a missing leading 0 and trailing n are added. Raises ValueError
+/// naming the entry that is out of order or range.
+void ring_offsets_from(py::handle ring_ends, std::size_t n, std::vector<std::uint32_t>& offsets);
+
+/// An int64 1-D array from any array-like, without a copy when it is one already.
+py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> as_offsets(py::handle values,
+                                                                                const char* name);
+
+/// Triangles as an (M, 3) uint32 array: a copy for few triangles, else the vector itself, moved
+/// into the array's owner.
+py::array triangles_array(std::vector<Triangle>&& triangles);
+/// A vector moved into a 1-D numpy array of the same element type (no copy).
+template <class T>
+py::array vector_array(std::vector<T>&& values);
+/// (M, 3) uint32 triangles from any array-like, checked against `points` (indices in range).
+std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points);
+
+/// The exception pear raises for a status other than ok (pear.InvalidInputError for
+/// invalid_input and index_overflow, pear.NotSimpleError for not_simple), its message `where`
+/// followed by the first error's (or the crossing's) description. `triangles` goes with
+/// NotSimpleError.
+[[noreturn]] void raise_for_status(Status status, std::span<const Diagnostic> diagnostics,
+                                   py::object triangles, const std::string& where = {});
+
+/// Whether `value` is a shapely geometry (its type has a `wkb` attribute; not an array).
+bool is_geometry(py::handle value);
+/// A shapely Polygon or MultiPolygon's polygons, read from its WKB: points in shapely's order
+/// (every ring closed), so indices into them are indices into its coordinates.
+FlatPolygons geometry_polygons(py::handle geometry);
+/// Reads sequence[i] as WKB (bytes, bytearray or None) for every i, the GIL released while
+/// parsing; a WkbError becomes pear.WKBError.
+FlatPolygons read_wkb_sequence(py::handle sequence);
+/// Flat polygons as numpy arrays: coordinates (N, 2), ring, polygon and geometry offsets.
+py::tuple flat_arrays(FlatPolygons&& flat);
+
+/// Registers validate, quality, orient2d, incircle and their result types (checks.cpp).
+void bind_checks(py::module_& module);
+
+/// pear.Status(status): the Python enum member.
+py::object status_object(Status status);
+
+}  // namespace pear::python

@@ -1,0 +1,302 @@
+// pear._pear: the Python module's C++ side. pear/__init__.py re-exports it; docs/python.md is
+// the reference. One polygon: pear.triangulate; many: triangulate_batch (ragged arrays) after
+// read_wkb (WKB values), the GIL released and the polygons spread over pear's scheduler.
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <string>
+
+#include "arrays.hpp"
+#include "pear/batch.hpp"
+#include "pear/pear.hpp"
+
+namespace pear::python {
+namespace {
+
+/// Polygons with at least this many points are triangulated with the GIL released: below it,
+/// releasing and taking the lock back costs more than another thread could gain.
+constexpr std::size_t release_gil_points = 256;
+
+/// A thread's engine and input buffers, kept between calls: a small polygon then costs no
+/// allocation but its result.
+struct Scratch {
+  Triangulator triangulator;
+  std::vector<Point> points;
+  std::vector<std::uint32_t> ring_offsets;
+};
+Scratch& thread_scratch() {
+  thread_local Scratch scratch;
+  return scratch;
+}
+
+Triangulation<> run(Scratch& s, const Options& options) {
+  const PolygonView view{s.points, s.ring_offsets};
+  if (s.points.size() < release_gil_points) return s.triangulator.triangulate(view, options);
+  py::gil_scoped_release release;
+  return s.triangulator.triangulate(view, options);
+}
+
+/// The result as pear.triangulate returns it, or the exception it raises.
+py::object finish(Triangulation<>&& result, bool strict, const std::string& where = {}) {
+  py::object triangles = triangles_array(std::move(result.triangles));
+  if (result.status == Status::invalid_input || result.status == Status::index_overflow ||
+      (result.status == Status::not_simple && strict))
+    raise_for_status(result.status, result.diagnostics, triangles, where);
+  if (strict) return triangles;
+  return py::make_tuple(triangles, status_object(result.status));
+}
+
+/// A shapely Polygon or MultiPolygon: each part by itself, indices into the geometry's
+/// coordinates; the worst status of the parts (the first part that has it names the place).
+py::object triangulate_geometry(py::handle geometry, const Options& options, bool strict) {
+  const FlatPolygons flat = geometry_polygons(geometry);
+  const std::size_t parts = flat.polygon_offsets.size() - 1;
+  Scratch& s = thread_scratch();
+  Triangulation<> all;
+  std::string where;
+  for (std::size_t p = 0; p < parts; ++p) {
+    const std::int64_t first_ring = flat.polygon_offsets[p], end_ring = flat.polygon_offsets[p + 1];
+    const std::int64_t first = flat.ring_offsets[first_ring], end = flat.ring_offsets[end_ring];
+    s.points.resize(static_cast<std::size_t>(end - first));
+    for (std::int64_t i = first; i < end; ++i)
+      s.points[i - first] = {flat.coordinates[2 * i], flat.coordinates[2 * i + 1]};
+    s.ring_offsets.clear();
+    for (std::int64_t r = first_ring; r <= end_ring; ++r)
+      s.ring_offsets.push_back(static_cast<std::uint32_t>(flat.ring_offsets[r] - first));
+    Triangulation<> part = run(s, options);
+    const auto base = static_cast<std::uint32_t>(first);
+    for (const auto& t : part.triangles)
+      all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+    if (part.status > all.status) {
+      all.status = part.status;
+      all.diagnostics = std::move(part.diagnostics);
+      where = parts > 1 ? "polygon " + std::to_string(p) + " of the MultiPolygon, " : "";
+    }
+  }
+  return finish(std::move(all), strict, where);
+}
+
+py::object triangulate(py::handle coords, py::handle ring_ends, const Options& options,
+                       bool strict) {
+  if (is_geometry(coords)) {
+    if (!ring_ends.is_none())
+      throw py::type_error("ring_ends goes with coordinates, not with a shapely geometry");
+    return triangulate_geometry(coords, options, strict);
+  }
+  const Coordinates array = as_coordinates(coords);
+  const auto n = static_cast<std::size_t>(array.shape(0));
+  if (n > std::size_t{0xFFFFFFFF})
+    throw py::value_error(std::to_string(n) + " points cannot be numbered by uint32 indices");
+  Scratch& s = thread_scratch();
+  ring_offsets_from(ring_ends, n, s.ring_offsets);
+  const double* xy = array.data();
+  s.points.resize(n);
+  for (std::size_t i = 0; i < n; ++i) s.points[i] = {xy[2 * i], xy[2 * i + 1]};
+  return finish(run(s, options), strict);
+}
+
+/// triangulate's arguments, as pear.triangulate's signature names them.
+struct TriangulateArguments {
+  py::handle coords, ring_ends = Py_None;
+  OptionArguments options;
+  bool strict = true;
+};
+
+std::string_view string_argument(py::handle value, const char* name) {
+  Py_ssize_t size = 0;
+  const char* text =
+      PyUnicode_Check(value.ptr()) ? PyUnicode_AsUTF8AndSize(value.ptr(), &size) : nullptr;
+  if (!text) throw py::type_error(std::string(name) + " must be a str");
+  return {text, static_cast<std::size_t>(size)};
+}
+
+long int_argument(py::handle value) {
+  const long number = PyLong_AsLong(value.ptr());
+  if (number == -1 && PyErr_Occurred()) throw py::error_already_set();
+  return number;
+}
+
+bool bool_argument(py::handle value) {
+  const int truth = PyObject_IsTrue(value.ptr());
+  if (truth < 0) throw py::error_already_set();
+  return truth != 0;
+}
+
+void keyword_argument(TriangulateArguments& a, std::string_view name, py::handle value) {
+  if (name == "algorithm") {
+    a.options.algorithm = string_argument(value, "algorithm");
+  } else if (name == "heuristic") {
+    a.options.heuristic = string_argument(value, "heuristic");
+  } else if (name == "delaunay") {
+    a.options.delaunay = bool_argument(value);
+  } else if (name == "check_simplicity") {
+    a.options.check_simplicity = bool_argument(value);
+  } else if (name == "threads") {
+    a.options.threads = int_argument(value);
+  } else if (name == "partitions") {
+    a.options.partitions = int_argument(value);
+  } else if (name == "strict") {
+    a.strict = bool_argument(value);
+  } else if (name == "ring_ends") {
+    a.ring_ends = value;
+  } else if (name == "coords") {
+    a.coords = value;
+  } else {
+    throw py::type_error("triangulate() got an unexpected keyword argument '" + std::string(name) +
+                         "'");
+  }
+}
+
+/// pear.triangulate as a vectorcall function: for polygons of a few dozen points the generic
+/// binding's argument handling (a dict per call for keywords) cost as much as the triangulation.
+PyObject* triangulate_vectorcall(PyObject*, PyObject* const* args, Py_ssize_t positional,
+                                 PyObject* keyword_names) {
+  try {
+    TriangulateArguments a;
+    if (positional > 2) throw py::type_error("triangulate() takes at most 2 positional arguments");
+    if (positional > 0) a.coords = args[0];
+    if (positional > 1) a.ring_ends = args[1];
+    const Py_ssize_t keywords = keyword_names ? PyTuple_GET_SIZE(keyword_names) : 0;
+    for (Py_ssize_t k = 0; k < keywords; ++k)
+      keyword_argument(a, string_argument(PyTuple_GET_ITEM(keyword_names, k), "a keyword"),
+                       args[positional + k]);
+    if (!a.coords) throw py::type_error("triangulate() missing its argument 'coords'");
+    return triangulate(a.coords, a.ring_ends, make_options(a.options), a.strict).release().ptr();
+  } catch (py::error_already_set& e) {
+    e.restore();
+  } catch (const py::builtin_exception& e) {
+    e.set_error();
+  } catch (const std::bad_alloc&) {
+    PyErr_NoMemory();
+  } catch (const std::exception& e) {
+    PyErr_SetString(PyExc_RuntimeError, e.what());
+  }
+  return nullptr;
+}
+
+PyMethodDef triangulate_definition = {
+    "triangulate",
+    reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&triangulate_vectorcall)),
+    METH_FASTCALL | METH_KEYWORDS,
+    "triangulate(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
+    "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
+    "Triangulates one polygon; returns an (M, 3) uint32 array of indices into coords.\n\n"
+    "coords: an (N, 2) array-like of float64 (a C-contiguous float64 array is read in place),\n"
+    "or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings closed, in\n"
+    "shapely's order). ring_ends: None (one ring), ring offsets [0, ..., N], earcut's ring ends\n"
+    "[..., N] or earcut's hole indices. Raises pear.InvalidInputError (a ValueError) naming ring\n"
+    "and vertex for input that cannot be triangulated, pear.NotSimpleError carrying the\n"
+    "best-effort triangles for a polygon that is not simple; strict=False returns (triangles,\n"
+    "pear.Status) instead of raising NotSimpleError. See docs/python.md."};
+
+/// Many polygons in the layout of shapely 2's to_ragged_array; returns the batch's arrays
+/// (pear._many.BatchResult wraps them).
+py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::handle polygon_offsets,
+                            std::string_view algorithm, std::string_view heuristic, bool delaunay,
+                            long threads, long partitions, bool check_simplicity) {
+  const Options options =
+      make_options({algorithm, heuristic, delaunay, check_simplicity, threads, partitions});
+  const Coordinates points = as_coordinates(coords);
+  const auto rings = as_offsets(ring_offsets, "ring_offsets");
+  const auto polygons = as_offsets(polygon_offsets, "polygon_offsets");
+  const PolygonBatch batch{std::span(points.data(), static_cast<std::size_t>(2 * points.shape(0))),
+                           std::span(rings.data(), static_cast<std::size_t>(rings.shape(0))),
+                           std::span(polygons.data(), static_cast<std::size_t>(polygons.shape(0)))};
+  BatchTriangulation<> result;
+  std::vector<std::uint8_t> status, issues;
+  std::vector<std::int64_t> diagnostic_rings, diagnostic_vertices;
+  {
+    py::gil_scoped_release release;
+    result = triangulate_batch<std::uint32_t>(batch, options);
+    status.resize(result.status.size());
+    std::transform(result.status.begin(), result.status.end(), status.begin(),
+                   [](Status s) { return static_cast<std::uint8_t>(s); });
+    for (const Diagnostic& d : result.diagnostics) {
+      issues.push_back(static_cast<std::uint8_t>(d.issue));
+      diagnostic_rings.push_back(static_cast<std::int64_t>(d.ring));
+      diagnostic_vertices.push_back(static_cast<std::int64_t>(d.vertex));
+    }
+  }
+  return py::make_tuple(triangles_array(std::move(result.triangles)),
+                        vector_array(std::move(result.triangle_offsets)),
+                        vector_array(std::move(status)),
+                        vector_array(std::move(result.diagnostic_offsets)),
+                        vector_array(std::move(issues)), vector_array(std::move(diagnostic_rings)),
+                        vector_array(std::move(diagnostic_vertices)), result.delaunay_flips);
+}
+
+/// Triangles as a list of WKB Polygons (for GeoSeries.from_wkb).
+py::list triangles_wkb(py::handle coords, py::handle triangles) {
+  const Coordinates points = as_coordinates(coords);
+  const auto n = static_cast<std::size_t>(points.shape(0));
+  const std::vector<Triangle> indices = triangles_from(triangles, n);
+  std::string bytes;
+  {
+    py::gil_scoped_release release;
+    bytes = triangles_to_wkb(std::span(points.data(), 2 * n), indices);
+  }
+  py::list out(indices.size());
+  for (std::size_t t = 0; t < indices.size(); ++t)
+    out[t] = py::bytes(bytes.data() + t * triangle_wkb_size, triangle_wkb_size);
+  return out;
+}
+
+void bind_diagnostic(py::module_& m) {
+  py::class_<Diagnostic>(m, "Diagnostic",
+                         "One finding about the input: the issue, the ring (0 = outer) and the "
+                         "vertex within that ring, in the caller's numbering.")
+      .def_property_readonly("issue", [](const Diagnostic& d) { return to_string(d.issue); })
+      .def_readonly("ring", &Diagnostic::ring)
+      .def_readonly("vertex", &Diagnostic::vertex)
+      .def_property_readonly("is_error", &Diagnostic::is_error)
+      .def("__str__", [](const Diagnostic& d) { return describe(d); })
+      .def("__repr__",
+           [](const Diagnostic& d) {
+             return "Diagnostic(issue='" + std::string(to_string(d.issue)) +
+                    "', ring=" + std::to_string(d.ring) + ", vertex=" + std::to_string(d.vertex) +
+                    ")";
+           })
+      .def("__eq__",
+           [](const Diagnostic& a, const Diagnostic& b) {
+             return a.issue == b.issue && a.ring == b.ring && a.vertex == b.vertex;
+           })
+      .def(py::pickle(
+          [](const Diagnostic& d) {
+            return py::make_tuple(static_cast<int>(d.issue), d.ring, d.vertex);
+          },
+          [](const py::tuple& t) {
+            return Diagnostic{static_cast<Issue>(t[0].cast<int>()), t[1].cast<std::size_t>(),
+                              t[2].cast<std::size_t>()};
+          }));
+  m.def(
+      "describe_issue",
+      [](int issue, std::size_t ring, std::size_t vertex) {
+        return Diagnostic{static_cast<Issue>(issue), ring, vertex};
+      },
+      "A Diagnostic from an issue code and its place (triangulate_many's arrays).");
+}
+
+}  // namespace
+}  // namespace pear::python
+
+PYBIND11_MODULE(_pear, m) {
+  namespace py = pybind11;
+  using namespace pear::python;
+  m.doc() = "pear's C++ core; use the package pear (docs/python.md).";
+  bind_diagnostic(m);
+  m.add_object("triangulate", py::reinterpret_steal<py::object>(PyCFunction_NewEx(
+                                  &triangulate_definition, nullptr, py::str("pear._pear").ptr())));
+  m.def("triangulate_batch", &triangulate_batch, py::arg("coords"), py::arg("ring_offsets"),
+        py::arg("polygon_offsets"), py::kw_only(), py::arg("algorithm") = "automatic",
+        py::arg("heuristic") = "top", py::arg("delaunay") = false, py::arg("threads") = 0,
+        py::arg("partitions") = 0, py::arg("check_simplicity") = true,
+        "Ragged arrays in, the batch's arrays out; use pear.triangulate_many.");
+  m.def(
+      "read_wkb", [](py::handle values) { return flat_arrays(read_wkb_sequence(values)); },
+      py::arg("values"),
+      "WKB values (bytes or None) to (coords, ring_offsets, polygon_offsets, "
+      "geometry_offsets); raises pear.WKBError naming the geometry and the byte.");
+  m.def("triangles_wkb", &triangles_wkb, py::arg("coords"), py::arg("triangles"),
+        "Each triangle as WKB Polygon bytes.");
+  bind_checks(m);
+}

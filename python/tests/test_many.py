@@ -1,0 +1,203 @@
+"""pear.triangulate_many: ragged arrays, shapely geometries and WKB in; flat triangles out."""
+import struct
+
+import numpy as np
+import pytest
+
+import pear
+from polygons import BOWTIE, SQUARE_WITH_HOLE, exact_check
+
+geometry = pytest.importorskip("shapely.geometry")
+wkb = pytest.importorskip("shapely.wkb")
+
+SQUARE = geometry.Polygon(SQUARE_WITH_HOLE[:4], [SQUARE_WITH_HOLE[4:]])
+TRIANGLE = geometry.Polygon([(20, 0), (30, 0), (30, 10)])
+
+
+def ragged(polygons):
+    """(coords, ring_offsets, polygon_offsets) of (coords, ring offsets) pairs."""
+    coords, rings, starts, base = [], [0], [0], 0
+    for points, offsets in polygons:
+        coords.append(points)
+        rings.extend(base + o for o in offsets[1:])
+        starts.append(len(rings) - 1)
+        base += len(points)
+    return np.vstack(coords), np.array(rings), np.array(starts)
+
+
+def test_ragged_equals_one_call_per_polygon():
+    polygons = [(SQUARE_WITH_HOLE, [0, 4, 8]), (SQUARE_WITH_HOLE[:4] * 3, [0, 4]),
+                (BOWTIE, [0, 4]), (np.array([[0, 0], [1, 1], [2, 2.0]]), [0, 3])]
+    coords, rings, starts = ragged(polygons)
+    result = pear.triangulate_many(coords, rings, starts, threads=2)
+    assert len(result) == 4 and result.coordinates is coords
+    assert result.status.tolist() == [pear.Status.ok, pear.Status.ok, pear.Status.not_simple,
+                                      pear.Status.invalid_input]
+    base = 0
+    for p, (points, offsets) in enumerate(polygons):
+        mine = result.polygon_triangles(p) - base
+        if p < 3:
+            expected, _ = pear.triangulate(points, offsets, strict=False)
+            assert np.array_equal(mine, expected)
+        else:
+            assert len(mine) == 0
+        base += len(points)
+    assert exact_check(SQUARE_WITH_HOLE, [0, 4, 8], result.polygon_triangles(0)) == []
+    assert [d.issue for d in result.diagnostics(2)] == ["not_simple"]
+    assert [d.issue for d in result.diagnostics(3)] == ["outer_ring_too_small"]
+    assert "not_simple=1" in repr(result) and not result.ok
+    with pytest.raises(pear.NotSimpleError, match="polygon 2"):
+        result.check()
+
+
+def test_ragged_bad_offsets_are_a_status_not_an_exception():
+    coords, rings, starts = ragged([(SQUARE_WITH_HOLE, [0, 4, 8])])
+    result = pear.triangulate_many(coords, [0, 9, 8], starts)
+    assert result.status.tolist() == [pear.Status.invalid_input]
+    assert result.diagnostics(0)[0].issue == "invalid_offsets"
+    with pytest.raises(TypeError):
+        pear.triangulate_many(coords, rings)
+    with pytest.raises(ValueError, match="geometry_offsets"):
+        pear.triangulate_many(coords, rings, starts, [0, 2])
+
+
+def test_threads_and_options_do_not_change_equal_inputs():
+    coords, rings, starts = ragged([(SQUARE_WITH_HOLE * (k + 1), [0, 4, 8]) for k in range(500)])
+    one = pear.triangulate_many(coords, rings, starts, threads=1)
+    two = pear.triangulate_many(coords, rings, starts, threads=2)
+    assert np.array_equal(one.triangles, two.triangles) and one.ok
+    assert np.array_equal(one.triangle_offsets, np.arange(501) * 8)
+    cdt = pear.triangulate_many(coords, rings, starts, delaunay=True, heuristic="fast")
+    assert cdt.ok and len(cdt.triangles) == 4000
+
+
+def test_geometries_wkb_and_none():
+    multi = geometry.MultiPolygon([SQUARE, TRIANGLE])
+    as_array = np.empty(3, dtype=object)
+    for i, value in enumerate([SQUARE, None, multi]):
+        as_array[i] = value
+    for data in ([SQUARE, None, multi], [SQUARE.wkb, None, multi.wkb], as_array,
+                 (g for g in [SQUARE, None, multi])):
+        result = pear.triangulate_many(data)
+        assert result.geometry_offsets.tolist() == [0, 1, 1, 3]
+        assert result.geometry_status.tolist() == [0, 0, 0]
+        per_geometry = result.geometry_triangles()
+        assert [len(t) for t in per_geometry] == [8, 0, 9]
+        assert np.array_equal(per_geometry[0], pear.triangulate(SQUARE))
+        assert np.array_equal(per_geometry[2], pear.triangulate(multi))
+        # The coordinates are shapely's, rings closed.
+        first = result.geometry_point_offsets()
+        assert np.array_equal(result.coordinates[first[2]:first[3]],
+                              np.vstack([np.asarray(SQUARE.exterior.coords),
+                                         np.asarray(SQUARE.interiors[0].coords),
+                                         np.asarray(TRIANGLE.exterior.coords)]))
+
+
+def test_empty_inputs():
+    for data in ([], [None, None], [geometry.Polygon()]):
+        result = pear.triangulate_many(data)
+        assert len(result) == 0 and result.triangles.shape == (0, 3)
+        assert len(result.geometry_triangles()) == len(data)
+    assert pear.triangulate_many(SQUARE).geometry_offsets.tolist() == [0, 1]
+
+
+def wkb_variants(polygon):
+    """shapely's WKB of polygon in each byte order, with Z, and with an SRID (EWKB); and WKB
+    built here for what shapely 1.8 does not write: ISO M and ZM, EWKB M and ZM, MultiPolygons
+    whose parts differ in byte order."""
+    z = geometry.Polygon([(x, y, 7.5) for x, y in polygon.exterior.coords],
+                         [[(x, y, -1.0) for x, y in ring.coords] for ring in polygon.interiors])
+    yield wkb.dumps(polygon)
+    yield wkb.dumps(polygon, big_endian=True)
+    yield wkb.dumps(z)
+    yield wkb.dumps(z, big_endian=True, srid=4326)
+    yield wkb.dumps(polygon, srid=3857)
+    yield built_wkb(polygon, ">", 2003, extra=1)                  # ISO M, what ST_AsBinary gives
+    yield built_wkb(polygon, "<", 3003, extra=2)                  # ISO ZM
+    yield built_wkb(polygon, ">", 0x40000003, extra=1)            # EWKB M
+    yield built_wkb(polygon, "<", 0xE0000003, extra=2, srid=4326)  # EWKB ZM with an SRID
+
+
+def built_wkb(polygon, order, code, extra, srid=None):
+    """A WKB Polygon of polygon's rings with `extra` ordinates (99.0) after x and y."""
+    out = struct.pack(order + "BI", 0 if order == ">" else 1, code)
+    if srid is not None:
+        out += struct.pack(order + "I", srid)
+    out += struct.pack(order + "I", 1 + len(polygon.interiors))
+    for ring in [polygon.exterior, *polygon.interiors]:
+        coords = list(ring.coords)
+        out += struct.pack(order + "I", len(coords))
+        out += b"".join(struct.pack(order + "d" * (2 + extra), x, y, *[99.0] * extra)
+                        for x, y in coords)
+    return out
+
+
+def test_multipolygon_parts_in_either_byte_order():
+    parts = [built_wkb(SQUARE, ">", 3, 0), built_wkb(TRIANGLE, "<", 1003, 1)]
+    value = struct.pack("<BII", 1, 6, 2) + b"".join(parts)
+    result = pear.triangulate_many([value])
+    assert result.geometry_offsets.tolist() == [0, 2] and result.ok
+    expected = pear.triangulate(geometry.MultiPolygon([SQUARE, TRIANGLE]))
+    assert np.array_equal(result.geometry_triangles()[0], expected)
+    nested = struct.pack("<BII", 1, 6, 1) + value
+    with pytest.raises(pear.WKBError, match="part 0 is not a Polygon") as caught:
+        pear.triangulate_many([nested])
+    assert (caught.value.index, caught.value.offset) == (0, 9)
+
+
+def test_wkb_forms_read_the_same_coordinates():
+    expected = pear.triangulate_many([SQUARE])
+    for value in wkb_variants(SQUARE):
+        result = pear.triangulate_many([value, bytearray(value)])
+        assert np.array_equal(result.coordinates[:10], expected.coordinates), value[:9]
+        assert np.array_equal(result.geometry_triangles()[1], expected.triangles)
+
+
+def test_wkb_round_trips_the_corpus_coordinates():
+    """shapely writes, pear reads: the same doubles, bit for bit (big and little endian)."""
+    from polygons import folder
+    polygons = folder("glyphs", limit=40)
+    shapes = [geometry.Polygon(p.rings()[0], p.rings()[1:]) for p in polygons]
+    for big_endian in (False, True):
+        result = pear.triangulate_many([wkb.dumps(s, big_endian=big_endian) for s in shapes])
+        starts = result.geometry_point_offsets()
+        for g, shape in enumerate(shapes):
+            coords = np.vstack([np.asarray(r.coords) for r in [shape.exterior, *shape.interiors]])
+            assert np.array_equal(result.coordinates[starts[g]:starts[g + 1]], coords)
+        assert result.ok
+
+
+@pytest.mark.parametrize("mangle, index, offset, reason", [
+    (lambda b: b[:-3], 1, 97, "5 points needs 80 bytes, 77 are left"),
+    (lambda b: b + b"\0", 1, 177, "1 bytes follow the end"),
+    (lambda b: b[:4], 1, 1, "expected a geometry type"),
+    (lambda b: b"\x07" + b[1:], 1, 0, "byte order 7"),
+    (lambda b: b[:1] + struct.pack("<I", 2) + b[5:], 1, 1, "type 2 is not a Polygon"),
+    (lambda b: b[:5] + struct.pack("<I", 10**6) + b[9:], 1, 5, "rings cannot fit"),
+    (lambda b: b[:9] + struct.pack("<I", 10**6) + b[13:], 1, 13, "ring of 1000000 points"),
+])
+def test_bad_wkb_names_the_geometry_and_the_byte(mangle, index, offset, reason):
+    good = wkb.dumps(SQUARE)
+    with pytest.raises(pear.WKBError, match=reason) as caught:
+        pear.triangulate_many([good, mangle(good), good])
+    assert (caught.value.index, caught.value.offset) == (index, offset)
+    assert f"geometry {index}, byte {offset}" in str(caught.value)
+    assert isinstance(caught.value, ValueError)
+
+
+def test_not_wkb_raises_type_error():
+    with pytest.raises(TypeError, match="geometry 1"):
+        pear.triangulate_many([SQUARE.wkb, "POLYGON ((0 0, 1 0, 1 1))"])
+    with pytest.raises(ValueError, match="not a Polygon"):
+        pear.triangulate_many([geometry.Point(1, 2)])
+
+
+def test_triangles_as_wkb_read_back():
+    triangles = pear.triangulate(SQUARE_WITH_HOLE, [4])
+    values = pear._pear.triangles_wkb(SQUARE_WITH_HOLE, triangles)
+    shapes = [wkb.loads(v) for v in values]
+    assert sum(s.area for s in shapes) == SQUARE.area
+    for shape, (a, b, c) in zip(shapes, triangles):
+        assert list(shape.exterior.coords) == [tuple(SQUARE_WITH_HOLE[i]) for i in (a, b, c, a)]
+    with pytest.raises(ValueError, match="index 8"):
+        pear._pear.triangles_wkb(SQUARE_WITH_HOLE, [[0, 1, 8]])
