@@ -95,6 +95,10 @@ enum class Issue : std::uint8_t {
   not_simple,               ///< rings cross or overlap; result is best effort (warning)
   invalid_offsets,          ///< ring (or polygon) offsets out of order or past the points (error)
   invalid_options,          ///< Options out of range: threads above max_threads (error)
+  spike_dissolved,   ///< a zero-width spike's tip (the ring folds back on itself) was dropped,
+                     ///< the boundary and area unchanged; the tip is not used (warning)
+  t_junction_split,  ///< the vertex lies inside an edge (of its own or another ring): the edge
+                     ///< is split there and the vertex used on both sides (warning)
 };
 
 /// The most threads Options::threads may ask for.

@@ -40,6 +40,10 @@ const char* to_string(Issue issue) {
       return "invalid_offsets";
     case Issue::invalid_options:
       return "invalid_options";
+    case Issue::spike_dissolved:
+      return "spike_dissolved";
+    case Issue::t_junction_split:
+      return "t_junction_split";
   }
   return "unknown";
 }
@@ -67,6 +71,11 @@ const char* explain(Issue issue) {
       return "offsets must start at 0, never decrease, and end at the number of points";
     case Issue::invalid_options:
       return "Options::threads is above pear::max_threads (4096)";
+    case Issue::spike_dissolved:
+      return "the ring folds back here (a zero-width spike); its tip is dropped";
+    case Issue::t_junction_split:
+      return "vertex lies inside an edge; the edge is split there and the vertex used on both "
+             "sides";
   }
   return "unknown issue";
 }

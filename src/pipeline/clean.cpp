@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -32,21 +33,6 @@ bool check_coordinates(const PolygonView& in, std::vector<Diagnostic>& diagnosti
   return true;
 }
 
-/// Appends ring [begin, end) without repeated consecutive points (nor a repeated closing point).
-void append_deduplicated(const PolygonView& in, std::uint32_t begin, std::uint32_t end,
-                         CleanPolygon& out) {
-  const std::size_t first = out.points.size();
-  for (std::uint32_t i = begin; i < end; ++i) {
-    if (out.points.size() > first && out.points.back() == in.points[i]) continue;
-    out.points.push_back(in.points[i]);
-    out.original.push_back(i);
-  }
-  while (out.points.size() > first + 1 && out.points.back() == out.points[first]) {
-    out.points.pop_back();
-    out.original.pop_back();
-  }
-}
-
 /// +1 counterclockwise, -1 clockwise, 0 when every point is collinear (zero area).
 /// Decided exactly at the lowest-leftmost vertex, which is convex for a simple ring;
 /// for non-simple rings whose extreme corner is flat, the shoelace sign decides.
@@ -66,6 +52,74 @@ int ring_orientation(const Point* p, std::size_t n) {
   }
   if (collinear) return 0;
   return area >= 0 ? 1 : -1;
+}
+
+/// Whether a ring going a -> b -> c (a != b != c) turns straight back at b: collinear, b not
+/// strictly between a and c. The edges a-b and b-c then overlap: b is the tip of a zero-width
+/// spike. Most corners need no orientation test: the two edges' vectors are then antiparallel,
+/// so both terms of their dot product are at most 0, and rounding keeps each difference's and
+/// each product's sign; a positive computed dot product proves a corner is no tip.
+bool folds_back(const Point& a, const Point& b, const Point& c) {
+  if ((b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0) return false;
+  return orient2d(a, b, c) == 0 && !on_open_segment(b, a, c);
+}
+
+/// Appends ring `ring` of the input without repeated consecutive points (the first occurrence
+/// stays) nor a repeated closing point, and dissolves its zero-width spikes and antennas: a tip
+/// where the ring folds back leaves, which may merge its neighbours (A-B-A becomes A) or make a
+/// new tip (A-B-C-B-A goes entirely), until none is left; each tip is named in a warning. The
+/// boundary as a chain of segments is unchanged, so is the area. One pass with the output as a
+/// stack, then the seam where the ring closes.
+void append_ring(const PolygonView& in, std::size_t ring, CleanPolygon& out,
+                 std::vector<Diagnostic>& diagnostics) {
+  auto& pts = out.points;
+  auto& original = out.original;
+  const std::size_t first = pts.size();
+  const auto drop_tip = [&](std::size_t k) {
+    diagnostics.push_back({Issue::spike_dissolved, ring, original[k] - in.ring_offsets[ring]});
+  };
+  for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
+    const Point& p = in.points[i];
+    while (pts.size() >= first + 2 && !(pts.back() == p) &&
+           folds_back(pts[pts.size() - 2], pts.back(), p)) {
+      drop_tip(pts.size() - 1);
+      pts.pop_back();
+      original.pop_back();
+    }
+    if (pts.size() > first && pts.back() == p) continue;
+    pts.push_back(p);
+    original.push_back(i);
+  }
+  // Where the ring closes, [begin, end) being the ring now, a tip may sit on either side.
+  std::size_t begin = first, end = pts.size();
+  while (end - begin >= 2) {
+    if (pts[end - 1] == pts[begin]) {
+      --end;
+    } else if (end - begin >= 3 && folds_back(pts[end - 2], pts[end - 1], pts[begin])) {
+      drop_tip(--end);
+    } else if (end - begin >= 3 && folds_back(pts[end - 1], pts[begin], pts[begin + 1])) {
+      drop_tip(begin++);
+    } else {
+      break;
+    }
+  }
+  const auto offset = [&](std::size_t k) { return static_cast<std::ptrdiff_t>(k); };
+  std::move(pts.begin() + offset(begin), pts.begin() + offset(end), pts.begin() + offset(first));
+  std::move(original.begin() + offset(begin), original.begin() + offset(end),
+            original.begin() + offset(first));
+  pts.resize(first + (end - begin));
+  original.resize(first + (end - begin));
+}
+
+bool fewer_than_3_points(const PolygonView& in, std::size_t ring) {
+  const Point* seen[2] = {nullptr, nullptr};
+  for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
+    const Point& p = in.points[i];
+    if ((seen[0] && *seen[0] == p) || (seen[1] && *seen[1] == p)) continue;
+    if (seen[1]) return false;
+    seen[seen[0] ? 1 : 0] = &p;
+  }
+  return true;
 }
 
 void reverse_ring(CleanPolygon& out, std::size_t first) {
@@ -104,13 +158,16 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
 
   for (std::size_t r = 0; r < rings; ++r) {
     const std::size_t first = out.points.size();
-    append_deduplicated(in, in.ring_offsets[r], in.ring_offsets[r + 1], out);
+    const std::size_t warnings = diagnostics.size();
+    append_ring(in, r, out, diagnostics);
     const std::size_t count = out.points.size() - first;
     const int orientation = count >= 3 ? ring_orientation(&out.points[first], count) : 0;
     if (count < 3 || orientation == 0) {
-      const Issue issue =
-          count < 3 ? (r == 0 ? Issue::outer_ring_too_small : Issue::hole_dropped_too_small)
-                    : (r == 0 ? Issue::outer_ring_too_small : Issue::hole_dropped_zero_area);
+      // A ring that is all spike (any collinear ring is) goes as a whole, named once.
+      diagnostics.resize(warnings);
+      const Issue issue = r == 0 ? Issue::outer_ring_too_small
+                                 : (fewer_than_3_points(in, r) ? Issue::hole_dropped_too_small
+                                                               : Issue::hole_dropped_zero_area);
       diagnostics.push_back({issue, r, 0});
       if (r == 0) return Status::invalid_input;
       drop_ring(out, first);
@@ -122,6 +179,27 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
   }
   out.ring_starts.push_back(static_cast<std::uint32_t>(out.points.size()));
   return Status::ok;
+}
+
+void split_at_t_junctions(const CleanPolygon& in, std::span<const TJunction> junctions,
+                          CleanPolygon& out) {
+  out.clear();
+  out.points.reserve(in.points.size() + junctions.size());
+  out.original.reserve(in.points.size() + junctions.size());
+  out.ring_source = in.ring_source;
+  std::size_t next = 0;  // the first junction not yet placed
+  for (std::size_t r = 0; r < in.ring_count(); ++r) {
+    out.ring_starts.push_back(static_cast<std::uint32_t>(out.points.size()));
+    for (std::uint32_t i = in.ring_starts[r]; i < in.ring_starts[r + 1]; ++i) {
+      out.points.push_back(in.points[i]);
+      out.original.push_back(in.original[i]);
+      for (; next < junctions.size() && junctions[next].edge == i; ++next) {
+        out.points.push_back(in.points[junctions[next].vertex]);
+        out.original.push_back(in.original[junctions[next].vertex]);
+      }
+    }
+  }
+  out.ring_starts.push_back(static_cast<std::uint32_t>(out.points.size()));
 }
 
 }  // namespace pear::detail

@@ -1,9 +1,11 @@
 // Input checks and cleaning: the first stage of the pipeline (docs/architecture.md).
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "core/stage.hpp"
+#include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
 
@@ -11,5 +13,11 @@ namespace pear::detail {
 /// naming ring and vertex) when nothing can be triangulated; warnings are appended too.
 Status clean_polygon(const PolygonView& in, CleanPolygon& out,
                      std::vector<Diagnostic>& diagnostics);
+
+/// `in` with every edge split at the vertices lying inside it (sorted along each edge, as
+/// SimplicityCheck::find_t_junctions gives them): a copy of such a vertex, with its caller's
+/// index, goes into the edge, so the vertex is used by both rings (or twice by its own ring).
+void split_at_t_junctions(const CleanPolygon& in, std::span<const TJunction> junctions,
+                          CleanPolygon& out);
 
 }  // namespace pear::detail

@@ -53,11 +53,29 @@ Diagnostic Engine::locate(const PolygonView& input, Issue issue, std::uint32_t c
   return {issue, ring, caller_index - input.ring_offsets[ring]};
 }
 
+std::optional<std::uint32_t> Engine::split_t_junctions(const PolygonView& input,
+                                                       const RunContext& ctx,
+                                                       std::uint32_t violation,
+                                                       std::vector<Diagnostic>& diagnostics) {
+  const TJunctionSearch search = simplicity_.find_t_junctions(clean_, ctx);
+  if (search.conflict) return search.conflict;
+  if (search.junctions.empty()) return violation;
+  for (const TJunction& t : search.junctions)
+    diagnostics.push_back(locate(input, Issue::t_junction_split, clean_.original[t.vertex]));
+  ctx.run_serial("split t-junctions", [&] {
+    split_at_t_junctions(clean_, search.junctions, split_);
+    std::swap(clean_, split_);
+  });
+  // The split polygon is checked again: what is left is a conflict of its own.
+  return simplicity_.find_violation(clean_, ctx);
+}
+
 bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                      std::vector<Diagnostic>& diagnostics, Status& status) {
   if (check_simplicity) {
     // Parallel on ctx's executor; records its own phases in the profile.
-    const std::optional<std::uint32_t> violation = simplicity_.find_violation(clean_, ctx);
+    std::optional<std::uint32_t> violation = simplicity_.find_violation(clean_, ctx);
+    if (violation) violation = split_t_junctions(input, ctx, *violation, diagnostics);
     if (violation) {
       diagnostics.push_back(locate(input, Issue::not_simple, clean_.original[*violation]));
       status = Status::not_simple;

@@ -62,11 +62,18 @@ class Engine {
   /// The algorithm on the first cycle, the sequential engine on what it leaves.
   bool clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                  TriangleList& out, std::uint32_t& best_effort_vertex);
+  /// After find_violation found `violation`: splits every edge at the vertices lying inside it,
+  /// each named in a warning, when that is all that is wrong. Returns the violation left (an
+  /// index into clean_), if any.
+  std::optional<std::uint32_t> split_t_junctions(const PolygonView& input, const RunContext& ctx,
+                                                 std::uint32_t violation,
+                                                 std::vector<Diagnostic>& diagnostics);
   Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
   FlatPolygon input_;
   TriangleList triangles_;
   CleanPolygon clean_;
+  CleanPolygon split_;  ///< clean_ with its T-junctions split, swapped with it
   Boundary boundary_;
   SimplicityCheck simplicity_;
   HoleBridger bridger_;

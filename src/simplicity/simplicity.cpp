@@ -54,6 +54,27 @@ bool RingEdges::conflict(std::uint32_t e, std::uint32_t f) const {
           on_open_segment(pts[after], pts[before], pts[shared]) || pts[before] == pts[after]);
 }
 
+bool RingEdges::t_junctions(std::uint32_t e, std::uint32_t f, std::vector<TJunction>& out) const {
+  if (!conflict(e, f)) return true;
+  if (next[e] == f || next[f] == e) return false;  // neighbours conflict only by folding back
+  const auto& pts = *points;
+  const Point &a = pts[e], &b = pts[next[e]], &c = pts[f], &d = pts[next[f]];
+  const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+  if (o1 == 0 && o2 == 0) return false;  // collinear and meeting: an overlap
+  const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+  if (opposite(o1, o2) && opposite(o3, o4)) return false;  // a proper crossing
+  // Not collinear, so they meet in one point: an end of one inside the other.
+  if (o1 == 0 && on_open_segment(c, a, b))
+    out.push_back({e, f});
+  else if (o2 == 0 && on_open_segment(d, a, b))
+    out.push_back({e, next[f]});
+  else if (o3 == 0 && on_open_segment(a, c, d))
+    out.push_back({f, e});
+  else if (o4 == 0 && on_open_segment(b, c, d))
+    out.push_back({f, next[e]});
+  return true;
+}
+
 void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext& ctx) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   edges_.points = &polygon.points;
@@ -100,6 +121,32 @@ std::optional<std::uint32_t> SimplicityCheck::find_violation(const CleanPolygon&
                    found);
   if (found.get() == SmallestViolation::none) return std::nullopt;
   return found.get();
+}
+
+TJunctionSearch SimplicityCheck::find_t_junctions(const CleanPolygon& polygon,
+                                                  const RunContext& ctx, Method method) {
+  if (polygon.points.empty()) return {};
+  index_edges(polygon, ctx);
+  const std::uint32_t slabs = method == Method::sweep_only ? 3 : slab_count(edges_.size());
+  TJunctionSearch search = find_t_junctions_in_slabs(edges_, slabs, ctx);
+  auto& found = search.junctions;
+  const auto& pts = polygon.points;
+  // Along each edge from its start; at one point the smallest vertex.
+  const auto before = [&](const TJunction& s, const TJunction& t) {
+    if (s.edge != t.edge) return s.edge < t.edge;
+    const Point &p = pts[s.vertex], &q = pts[t.vertex];
+    if (!(p == q))
+      return lexicographic_less(pts[s.edge], pts[edges_.next[s.edge]]) ? lexicographic_less(p, q)
+                                                                       : lexicographic_less(q, p);
+    return s.vertex < t.vertex;
+  };
+  std::sort(found.begin(), found.end(), before);
+  found.erase(std::unique(found.begin(), found.end(),
+                          [&](const TJunction& s, const TJunction& t) {
+                            return s.edge == t.edge && pts[s.vertex] == pts[t.vertex];
+                          }),
+              found.end());
+  return search;
 }
 
 /// The ring's edges as maximal runs along which x never reverses (vertical edges join the run

@@ -32,6 +32,21 @@ inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
+/// A vertex lying strictly inside an edge (exact orient2d == 0, strictly between its ends).
+struct TJunction {
+  std::uint32_t edge;    ///< the edge from vertex `edge` to its successor in the ring
+  std::uint32_t vertex;  ///< the vertex inside it
+};
+
+/// What SimplicityCheck::find_t_junctions found.
+struct TJunctionSearch {
+  /// Every T-junction, by edge, then from the edge's start to its end; one vertex (the smallest
+  /// index) for each point inside an edge. Incomplete when there is a conflict.
+  std::vector<TJunction> junctions;
+  /// The smaller edge of a crossing, an overlap or a fold: what no split resolves.
+  std::optional<std::uint32_t> conflict;
+};
+
 /// The rings' edges: edge e runs from vertex e to next[e].
 struct RingEdges {
   const std::vector<Point>* points = nullptr;
@@ -43,6 +58,9 @@ struct RingEdges {
   /// Whether edges e and f (any two) cross, overlap, or one passes through a vertex of the
   /// other; neighbours in a ring conflict only by folding back over each other.
   bool conflict(std::uint32_t e, std::uint32_t f) const;
+  /// For edges e and f that may conflict: false when they cross, overlap or fold back over each
+  /// other; otherwise true, appending the T-junction if an end of one lies inside the other.
+  bool t_junctions(std::uint32_t e, std::uint32_t f, std::vector<TJunction>& out) const;
 
  private:
   bool separate_edges_conflict(std::uint32_t e, std::uint32_t f) const;
@@ -92,6 +110,10 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
 void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
                     SmallestViolation& found);
 
+/// The sweep in slabs, recording every T-junction and stopping at a conflict no split resolves.
+TJunctionSearch find_t_junctions_in_slabs(const RingEdges& edges, std::uint32_t slabs,
+                                          const RunContext& ctx);
+
 /// What the small check (SimplicityCheck::check_small) found.
 struct SmallVerdict {
   std::optional<std::uint32_t> violation;  ///< as find_violation's
@@ -112,6 +134,13 @@ class SimplicityCheck {
   /// same for any thread count.
   std::optional<std::uint32_t> find_violation(const CleanPolygon& polygon, const RunContext& ctx,
                                               Method method = Method::automatic);
+
+  /// Every vertex lying strictly inside an edge, or a conflict that splitting edges at such
+  /// vertices cannot resolve. A sweep (in slabs, in parallel): for polygons find_violation has
+  /// found not simple, so valid input never pays for it. Deterministic at any thread count.
+  /// `sweep_only` sweeps three slabs (for tests: slab borders on small inputs).
+  TJunctionSearch find_t_junctions(const CleanPolygon& polygon, const RunContext& ctx,
+                                   Method method = Method::automatic);
 
   /// For small polygons (up to a few hundred edges), sequentially: every pair of one ring of at
   /// most 64 edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every

@@ -3,6 +3,8 @@
 // there are tested. The first conflict in sweep order is always found before the order could
 // go wrong, and the search stops at the first conflict found. It works on any subset of the
 // edges (a conflict among them is found if there is one), which lets slabs be swept apart.
+// The same sweep lists the T-junctions (a vertex inside an edge): touching edges never swap
+// places in the status, so it goes on past them and stops only at a crossing or an overlap.
 #include <algorithm>
 #include <set>
 
@@ -64,10 +66,12 @@ std::vector<Event> sorted_events(const std::vector<Segment>& segments) {
   return events;
 }
 
-}  // namespace
-
-std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
-                                         std::span<const std::uint32_t> subset) {
+/// The sweep over a subset: visit(e, f) (edge indices) for every pair of edges that become
+/// neighbours in the status; a value it returns stops the sweep and is returned, as is the
+/// smaller edge of two that the order finds collinear and overlapping.
+template <class Visit>
+std::optional<std::uint32_t> sweep(const RingEdges& edges, std::span<const std::uint32_t> subset,
+                                   Visit&& visit) {
   const auto& pts = *edges.points;
   std::vector<Segment> segments(subset.size());
   for (std::size_t s = 0; s < subset.size(); ++s) {
@@ -77,10 +81,7 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
   Below below{&segments, subset};
   std::set<std::uint32_t, Below> status(below);
   std::vector<std::set<std::uint32_t, Below>::iterator> place(subset.size());
-  const auto conflict = [&](std::uint32_t s, std::uint32_t t) -> std::optional<std::uint32_t> {
-    if (edges.conflict(subset[s], subset[t])) return std::min(subset[s], subset[t]);
-    return std::nullopt;
-  };
+  const auto meet = [&](std::uint32_t s, std::uint32_t t) { return visit(subset[s], subset[t]); };
   // Where a ring passes through a vertex, its edge ending there leaves the status and the next
   // one enters at the same place: the entering edge is inserted with the leaving one's
   // successor as a hint, in constant time instead of a search (std::set checks the hint and
@@ -98,24 +99,25 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
       left_at = event.at;
       hint = above;
       if (has_below && above != status.end())
-        if (const auto found = conflict(*under, *above)) return found;
+        if (const auto found = meet(*under, *above)) return found;
       continue;
     }
     const auto it = left_at == event.at ? status.insert(hint, s) : status.insert(s).first;
     if (status.key_comp().overlap != UINT32_MAX) return status.key_comp().overlap;
     place[s] = it;
     if (it != status.begin())
-      if (const auto found = conflict(*std::prev(it), s)) return found;
+      if (const auto found = meet(*std::prev(it), s)) return found;
     if (std::next(it) != status.end())
-      if (const auto found = conflict(s, *std::next(it))) return found;
+      if (const auto found = meet(s, *std::next(it))) return found;
   }
   return std::nullopt;
 }
 
-/// Slab borders at x-quantiles of the edges' left ends. A conflict's point lies in both edges'
-/// x-ranges, so its slab holds both edges: the slabs together miss no conflict.
-void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
-                    SmallestViolation& found) {
+/// Each slab's edges: borders at x-quantiles of the edges' left ends, an edge in every slab its
+/// x-range meets. A conflict's point lies in both edges' x-ranges, so its slab holds both edges:
+/// the slabs together miss no conflict (nor a vertex inside an edge).
+std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::uint32_t slabs,
+                                                   const RunContext& ctx) {
   const std::uint32_t n = edges.size();
   std::vector<std::vector<std::uint32_t>> lists(slabs);
   ctx.run_serial("check simplicity: slabs", [&] {
@@ -136,9 +138,51 @@ void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContex
       for (std::size_t s = slab_of(edges.boxes[e].x0); s <= slab_of(edges.boxes[e].x1); ++s)
         lists[s].push_back(e);
   });
+  return lists;
+}
+
+}  // namespace
+
+std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
+                                         std::span<const std::uint32_t> subset) {
+  return sweep(edges, subset,
+               [&](std::uint32_t e, std::uint32_t f) -> std::optional<std::uint32_t> {
+                 if (edges.conflict(e, f)) return std::min(e, f);
+                 return std::nullopt;
+               });
+}
+
+void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
+                    SmallestViolation& found) {
+  const auto lists = slab_edges(edges, slabs, ctx);
   ctx.run_tasks("check simplicity: sweep slabs", slabs, [&](std::size_t s) {
     if (const auto violation = sweep_edges(edges, lists[s])) found.offer(*violation);
   });
+}
+
+/// Touching edges keep their order in the status (neither crosses the other), so the sweep
+/// goes on past them: every pair of touching edges becomes neighbours at some event, where it
+/// is recorded. It stops at the first crossing or overlap, which no split resolves.
+TJunctionSearch find_t_junctions_in_slabs(const RingEdges& edges, std::uint32_t slabs,
+                                          const RunContext& ctx) {
+  const auto lists = slab_edges(edges, slabs, ctx);
+  std::vector<std::vector<TJunction>> found(slabs);
+  SmallestViolation conflict;
+  ctx.run_tasks("find t-junctions: sweep slabs", slabs, [&](std::size_t s) {
+    const auto stop = sweep(edges, lists[s], [&](std::uint32_t e, std::uint32_t f) {
+      return edges.t_junctions(e, f, found[s]) ? std::nullopt
+                                               : std::optional<std::uint32_t>(std::min(e, f));
+    });
+    if (stop) conflict.offer(*stop);
+  });
+  TJunctionSearch search;
+  if (conflict.get() != SmallestViolation::none) {
+    search.conflict = conflict.get();
+    return search;
+  }
+  for (const auto& list : found)
+    search.junctions.insert(search.junctions.end(), list.begin(), list.end());
+  return search;
 }
 
 }  // namespace pear::detail

@@ -31,6 +31,7 @@
 #include "exact_sum.hpp"
 #include "pear/predicates.hpp"
 #include "pear/validate.hpp"
+#include "residue.hpp"
 
 namespace pear {
 namespace {
@@ -107,6 +108,9 @@ class Validator {
   void check_edges();
   void fill_edge_uses(std::vector<std::size_t>& offsets, std::vector<EdgeUse>& uses) const;
   void check_edge_group(const EdgeGroup& group);
+  void balance_unbalanced();
+  void note_self_touching_splits(const std::vector<detail::BoundarySplit>& splits);
+  std::size_t ring_of(std::uint32_t index) const;
   void report_bad_edge(const EdgeGroup& group);
   void check_delaunay(const EdgeGroup& group);
   void check_count();
@@ -119,10 +123,14 @@ class Validator {
 
   std::vector<std::uint32_t> boundary_;  // kept vertices, interior on the left, ring after ring
   std::vector<std::uint32_t> boundary_starts_;  // kept ring k is [starts[k], starts[k+1])
+  std::vector<std::uint32_t> boundary_rings_;   // the caller's ring of kept ring k
   std::size_t holes_ = 0;
   std::vector<std::uint32_t> canonical_;   // index -> smallest index with the same point
   std::vector<std::uint8_t> on_boundary_;  // by canonical id: a kept vertex sits there
   std::size_t distinct_boundary_points_ = 0;
+  bool self_touching_ = false;                     // a kept ring passes a point twice
+  std::vector<EdgeGroup> unbalanced_;              // edges whose uses do not balance one by one
+  std::size_t splits_ = 0;                         // points inside boundary edges (T-junctions)
   std::vector<std::int8_t> orientation_;           // per triangle: +1, 0, -1; 2 = left out
   std::size_t collapsed_triangles_ = 0;            // zero area with a point used twice
   detail::ExactSum polygon_area_, triangle_area_;  // both twice the area
@@ -175,14 +183,58 @@ bool Validator::check_coordinates() {
   return ok;
 }
 
-// The cleaned ring's vertices: repeated consecutive points and closing points dropped; the kept
-// vertex keeps the index of its first occurrence.
+// Whether a ring going a -> b -> c turns straight back at b: collinear, and b not strictly
+// between a and c. Distinct points on a line differ in x unless the line is vertical.
+bool turns_back(const Point& a, const Point& b, const Point& c) {
+  if (orient2d(a, b, c) != 0) return false;
+  const auto between = [](double p, double q, double r) {
+    return (p < q && q < r) || (r < q && q < p);
+  };
+  return !between(a.x, b.x, c.x) && !between(a.y, b.y, c.y);
+}
+
+// Zero-width spikes leave the ring: a vertex where it turns straight back (its two edges cancel
+// in the boundary chain) goes, and so does a repeated point that leaves, until neither is left.
+// A work list over a doubly linked ring: each removal looks again at the two neighbours only.
+void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& kept) {
+  const std::size_t k = kept.size();
+  std::vector<std::size_t> before(k), after(k), work(k);
+  std::vector<std::uint8_t> gone(k, 0);
+  for (std::size_t i = 0; i < k; ++i) {
+    before[i] = (i + k - 1) % k;
+    after[i] = (i + 1) % k;
+    work[i] = k - 1 - i;
+  }
+  std::size_t left = k;
+  const auto at = [&](std::size_t i) -> const Point& { return points[kept[i]]; };
+  while (!work.empty() && left >= 3) {
+    const std::size_t i = work.back();
+    work.pop_back();
+    if (gone[i]) continue;
+    const std::size_t a = before[i], c = after[i];
+    if (!(at(a) == at(i)) && !turns_back(at(a), at(i), at(c))) continue;
+    gone[i] = 1;
+    --left;
+    after[a] = c;
+    before[c] = a;
+    work.push_back(c);
+    work.push_back(a);
+  }
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < k; ++i)
+    if (!gone[i]) kept[w++] = kept[i];
+  kept.resize(w);
+}
+
+// The cleaned ring's vertices: repeated consecutive points and closing points dropped (the kept
+// vertex keeps the index of its first occurrence), then zero-width spikes dissolved.
 void Validator::keep_ring(std::size_t ring, std::vector<std::uint32_t>& kept) {
   const auto& points = polygon_.points;
   kept.clear();
   for (std::uint32_t i = polygon_.ring_offsets[ring]; i < polygon_.ring_offsets[ring + 1]; ++i)
     if (kept.empty() || !(points[i] == points[kept.back()])) kept.push_back(i);
   while (kept.size() > 1 && points[kept.back()] == points[kept.front()]) kept.pop_back();
+  if (kept.size() >= 3) dissolve_tips(points, kept);
 }
 
 bool Validator::clean_rings() {
@@ -217,6 +269,7 @@ bool Validator::clean_rings() {
     holes_ += ring == 0 ? 0 : 1;
     boundary_.insert(boundary_.end(), kept.begin(), kept.end());
     boundary_starts_.push_back(static_cast<std::uint32_t>(boundary_.size()));
+    boundary_rings_.push_back(static_cast<std::uint32_t>(ring));
   }
   return true;
 }
@@ -273,6 +326,14 @@ void Validator::canonicalize() {
     if (on_boundary_[canonical_[v]]) continue;
     on_boundary_[canonical_[v]] = 1;
     ++distinct_boundary_points_;
+  }
+  std::vector<std::uint32_t> last_ring(count, UINT32_MAX);  // by canonical id
+  for (std::size_t k = 0; k + 1 < boundary_starts_.size(); ++k) {
+    for (std::uint32_t i = boundary_starts_[k]; i < boundary_starts_[k + 1]; ++i) {
+      std::uint32_t& seen = last_ring[canonical_[boundary_[i]]];
+      self_touching_ = self_touching_ || seen == k;
+      seen = static_cast<std::uint32_t>(k);
+    }
   }
 }
 
@@ -403,15 +464,64 @@ void Validator::check_edges() {
       check_edge_group(group);
     }
   }
+  if (!unbalanced_.empty()) balance_unbalanced();
+}
+
+std::size_t Validator::ring_of(std::uint32_t index) const {
+  const auto& starts = polygon_.ring_offsets;
+  return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), index) -
+                                  starts.begin() - 1);
+}
+
+// Edges whose uses do not balance one by one may still balance as segments: a boundary edge
+// with a vertex inside it (a T-junction) is matched by the triangles' edges along its parts
+// (residue.hpp). Whatever does not cancel is reported, in the order the edges were met.
+void Validator::balance_unbalanced() {
+  std::vector<detail::Residue> residues;
+  for (const EdgeGroup& g : unbalanced_)
+    residues.push_back(
+        {g.lo, g.hi, g.forward - g.backward, g.boundary_forward - g.boundary_backward});
+  const detail::ResidueBalance balance = detail::balance_residue(polygon_.points, residues);
+  for (std::size_t r = 0; r < unbalanced_.size(); ++r) {
+    if (balance.cancelled[r]) continue;
+    ++report_.bad_edges;
+    report_bad_edge(unbalanced_[r]);
+  }
+  splits_ = balance.splits.size();
+  note_self_touching_splits(balance.splits);
+}
+
+// A split point makes its ring pass that point twice when the ring has a vertex there, or
+// another split there.
+void Validator::note_self_touching_splits(const std::vector<detail::BoundarySplit>& splits) {
+  if (splits.empty() || self_touching_) return;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> at;  // (caller's ring, canonical point)
+  std::vector<std::uint8_t> split_point(canonical_.size(), 0);
+  for (const detail::BoundarySplit& s : splits) {
+    at.emplace_back(ring_of(unbalanced_[s.residue].boundary_start), s.point);
+    split_point[s.point] = 1;
+  }
+  std::sort(at.begin(), at.end());
+  self_touching_ = std::adjacent_find(at.begin(), at.end()) != at.end();
+  for (std::size_t k = 0; !self_touching_ && k + 1 < boundary_starts_.size(); ++k)
+    for (std::uint32_t i = boundary_starts_[k]; i < boundary_starts_[k + 1]; ++i)
+      if (const std::uint32_t c = canonical_[boundary_[i]];
+          split_point[c] &&
+          std::binary_search(at.begin(), at.end(), std::pair(boundary_rings_[k], c)))
+        self_touching_ = true;
 }
 
 // The triangles' boundary chain must equal the polygon's on this edge, each direction used at
 // most once (more would be an overlap).
 void Validator::check_edge_group(const EdgeGroup& group) {
   const int need = group.boundary_forward - group.boundary_backward;
-  if (group.forward > 1 || group.backward > 1 || group.forward - group.backward != need) {
+  if (group.forward > 1 || group.backward > 1) {
     ++report_.bad_edges;
     report_bad_edge(group);
+    return;
+  }
+  if (group.forward - group.backward != need) {
+    unbalanced_.push_back(group);
     return;
   }
   const bool interior = group.boundary_forward + group.boundary_backward == 0;
@@ -485,21 +595,25 @@ void Validator::check_delaunay(const EdgeGroup& group) {
 }
 
 void Validator::check_count() {
-  const auto n = static_cast<std::int64_t>(boundary_.size());
+  // A point inside a boundary edge splits it: one more boundary vertex, at a repeated point.
+  const auto n = static_cast<std::int64_t>(boundary_.size() + splits_);
   const auto h = static_cast<std::int64_t>(holes_);
   const auto m = n - static_cast<std::int64_t>(distinct_boundary_points_);
   const std::int64_t expected = std::max<std::int64_t>(0, n + 2 * h - 2 - 2 * m);
   report_.expected_triangles = static_cast<std::size_t>(expected);
   const std::size_t counted = triangles_.size() - collapsed_triangles_;
-  // With repeated points the formula holds for holes touching the outer ring or each other, but
-  // not for every self-touching ring (lobes touching lobes, as in earcut's shared-points); there
-  // the edge, orientation and area checks alone prove the covering, so the count only informs.
-  if (!options_.check_count || counted == report_.expected_triangles || m > 0) return;
+  // The formula counts angles: where rings meet at a point, their angles there overlap by a
+  // full turn per extra visit (two triangles), which holds whenever no ring passes a point
+  // twice. A ring touching itself (lobes touching lobes, as in earcut's shared-points) can
+  // differ; there the edge, orientation and area checks alone prove the covering, so the count
+  // only informs.
+  if (!options_.check_count || counted == report_.expected_triangles || self_touching_) return;
   fail([&] {
     return "wrong triangle count: " + std::to_string(counted) + " (not counting " +
            std::to_string(collapsed_triangles_) +
            " collapsed), expected n + 2h - 2 - 2m = " + std::to_string(expected) +
-           " with n = " + std::to_string(n) + " kept vertices, h = " + std::to_string(h) +
+           " with n = " + std::to_string(n) + " kept vertices (" + std::to_string(splits_) +
+           " of them splitting an edge), h = " + std::to_string(h) +
            " holes, m = " + std::to_string(m) + " repeated points";
   });
 }

@@ -64,17 +64,16 @@ TEST_P(Engine, HoleTouchingOuterRingAtAVertex) {
   expect_valid(p, GetParam(), "hole touching outer vertex");
 }
 
-TEST_P(Engine, HoleVertexInsideOuterEdgeIsReportedButCovered) {
-  // The hole's vertex (0, 2) lies inside the outer edge x = 0: not a valid boundary (the edge
-  // would need splitting), so the status says so; the area is still covered exactly once.
+TEST_P(Engine, HoleVertexInsideOuterEdgeSplitsTheEdge) {
+  // The hole's vertex (0, 2) lies inside the outer edge x = 0 (a T-junction): the edge is split
+  // there, the vertex used by both rings, and a warning names it.
   const Polygon p = {square(0, 0, 4), {{0, 2}, {2, 1}, {2, 3}}};
+  expect_valid(p, GetParam(), "hole vertex inside outer edge");
   const auto result = triangulate(p, {.heuristic = GetParam()});
-  EXPECT_EQ(result.status, Status::not_simple);
-  ASSERT_FALSE(result.diagnostics.empty());
-  EXPECT_EQ(result.diagnostics[0].issue, Issue::not_simple);
-  const auto report = validate(p, std::span(result.triangles));
-  EXPECT_EQ(report.area_rel_error, 0);
-  EXPECT_EQ(report.bad_orientation, 0u);
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].issue, Issue::t_junction_split);
+  EXPECT_EQ(result.diagnostics[0].ring, 1u);
+  EXPECT_EQ(result.diagnostics[0].vertex, 0u);
 }
 
 TEST_P(Engine, CrossingHolesAreReportedNotSimple) {
@@ -84,8 +83,8 @@ TEST_P(Engine, CrossingHolesAreReportedNotSimple) {
 }
 
 TEST_P(Engine, SimplicityCheckCanBeSwitchedOff) {
-  // A vertex inside another edge of the same ring (a self-touching T-junction).
-  const Ring r = {{0, 0}, {4, 0}, {4, 4}, {2, 0}, {0, 4}};
+  // Two edges of the ring cross at (2, 2).
+  const Ring r = {{0, 0}, {4, 4}, {4, 0}, {0, 4}, {-1, 2}};
   EXPECT_EQ(triangulate(Polygon{r}, {.heuristic = GetParam()}).status, Status::not_simple);
   const auto unchecked =
       triangulate(Polygon{r}, {.heuristic = GetParam(), .check_simplicity = false});
@@ -120,16 +119,15 @@ TEST_P(Engine, SelfTouchingRingFigureEight) {
 }
 
 TEST_P(Engine, ZeroWidthAntennaIsDissolved) {
-  // A spike out and back along the same segment covers no area: n + 2h - 2 - 2m triangles.
-  // The antenna's edges bound no area, so the validator's edge check cannot hold; area and
-  // orientation must.
+  // A spike out and back along the same segment covers no area: cleaning drops its tip (2, 8)
+  // and the repeated (2, 4), leaving the square with a collinear vertex: 3 triangles.
   const Ring r = {{0, 0}, {4, 0}, {4, 4}, {2, 4}, {2, 8}, {2, 4}, {0, 4}};
+  expect_valid(Polygon{r}, GetParam(), "antenna");
   const auto result = triangulate(Polygon{r}, {.heuristic = GetParam()});
   EXPECT_EQ(result.triangles.size(), 3u);
-  const auto report = validate(Polygon{r}, std::span(result.triangles));
-  EXPECT_EQ(report.bad_orientation, 0u);
-  EXPECT_EQ(report.zero_area_triangles, 0u);
-  EXPECT_LE(report.area_rel_error, 1e-12);
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].issue, Issue::spike_dissolved);
+  EXPECT_EQ(result.diagnostics[0].vertex, 4u);
 }
 
 TEST_P(Engine, ManyHolesInAGrid) {

@@ -247,6 +247,119 @@ TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   }
 }
 
+/// The T-junctions by brute force: a conflict when two edges cross, overlap or fold back; else
+/// every (edge, vertex strictly inside it), sorted along the edge, the smallest vertex per point.
+TJunctionSearch t_junctions_by_brute_force(const CleanPolygon& polygon) {
+  const auto& pts = polygon.points;
+  std::vector<std::uint32_t> next(pts.size());
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r)
+    for (std::uint32_t i = polygon.ring_starts[r]; i < polygon.ring_starts[r + 1]; ++i)
+      next[i] = i + 1 < polygon.ring_starts[r + 1] ? i + 1 : polygon.ring_starts[r];
+  const auto inside = [&](std::uint32_t v, std::uint32_t e) {
+    return orient2d(pts[e], pts[next[e]], pts[v]) == 0 && pts[v] != pts[e] &&
+           pts[v] != pts[next[e]] && between(pts[v], pts[e], pts[next[e]]);
+  };
+  TJunctionSearch search;
+  for (std::uint32_t e = 0; e < pts.size(); ++e) {
+    for (std::uint32_t f = e + 1; f < pts.size(); ++f) {
+      const Point &a = pts[e], &b = pts[next[e]], &c = pts[f], &d = pts[next[f]];
+      if (!segments_violate(a, b, c, d)) continue;
+      const bool collinear = orient2d(a, b, c) == 0 && orient2d(a, b, d) == 0;
+      const bool neighbours = next[e] == f || next[f] == e;
+      bool t = false;
+      for (auto [v, edge] :
+           {std::pair(f, e), std::pair(next[f], e), std::pair(e, f), std::pair(next[e], f)})
+        if (!collinear && !neighbours && inside(v, edge)) {
+          search.junctions.push_back({edge, v});
+          t = true;
+        }
+      if (!t) search.conflict = std::min(search.conflict.value_or(e), e);
+    }
+  }
+  if (search.conflict) search.junctions.clear();
+  std::sort(search.junctions.begin(), search.junctions.end(), [&](auto s, auto t) {
+    if (s.edge != t.edge) return s.edge < t.edge;
+    const Point &p = pts[s.vertex], &q = pts[t.vertex], &a = pts[s.edge];
+    const double along_p = std::abs(p.x - a.x) + std::abs(p.y - a.y);  // exact on small grids
+    const double along_q = std::abs(q.x - a.x) + std::abs(q.y - a.y);
+    return along_p != along_q ? along_p < along_q : s.vertex < t.vertex;
+  });
+  search.junctions.erase(std::unique(search.junctions.begin(), search.junctions.end(),
+                                     [&](auto s, auto t) {
+                                       return s.edge == t.edge && pts[s.vertex] == pts[t.vertex];
+                                     }),
+                         search.junctions.end());
+  return search;
+}
+
+/// A square with rectangular holes and triangular holes whose apex lies on a lattice point of
+/// an edge of the square or of a rectangle, pointing away from it: T-junctions of every kind,
+/// sometimes overlapping each other (conflicts).
+CleanPolygon touching_holes(std::mt19937& rng) {
+  constexpr int size = 12;
+  std::uniform_int_distribution<int> coordinate(1, size - 3), extent(1, 3), pick(0, 99);
+  Polygon polygon = {{{0, 0}, {size, 0}, {size, size}, {0, size}}};
+  const int holes = 1 + pick(rng) % 4;
+  for (int k = 0; k < holes; ++k) {
+    if (pick(rng) < 40) {
+      const double x = coordinate(rng), y = coordinate(rng), w = extent(rng), h = extent(rng);
+      polygon.push_back({{x, y}, {x, y + h}, {x + w, y + h}, {x + w, y}});
+      continue;
+    }
+    // An edge of the square or of a hole, a lattice point inside it, the side away from it.
+    const Ring& ring = polygon[static_cast<std::size_t>(pick(rng)) % polygon.size()];
+    const std::size_t i = static_cast<std::size_t>(pick(rng)) % ring.size();
+    const Point a = ring[i], b = ring[(i + 1) % ring.size()];
+    const double length = std::abs(b.x - a.x) + std::abs(b.y - a.y);
+    if (length < 2 || ring.size() != 4) continue;
+    const double t = 1 + pick(rng) % static_cast<int>(length - 1);
+    const Point d = {(b.x - a.x) / length, (b.y - a.y) / length};
+    const Point apex = {a.x + t * d.x, a.y + t * d.y};
+    // The square runs counterclockwise (inside on the left), the rectangles clockwise (their
+    // outside on the left): either way the triangle goes to the left of a -> b.
+    const Point left = {-d.y, d.x};
+    polygon.push_back({apex,
+                       {apex.x + 2 * left.x + d.x, apex.y + 2 * left.y + d.y},
+                       {apex.x + 2 * left.x - d.x, apex.y + 2 * left.y - d.y}});
+  }
+  return cleaned(polygon);
+}
+
+/// find_t_junctions finds every T-junction (the sweep goes on past touching edges) and a
+/// conflict exactly when one exists, the same at 1, 2 and 4 threads and in three slabs.
+TEST(Simplicity, TJunctionsAgreeWithBruteForce) {
+  std::mt19937 rng(2024);
+  const Contexts contexts;
+  SimplicityCheck check;
+  int junctions = 0, conflicts = 0;
+  for (int round = 0; round < 4000; ++round) {
+    const int rings = 1 + round % 3;
+    const CleanPolygon polygon =
+        round % 2 ? touching_holes(rng) : random_polygon(rng, rings, 3 + round % 9, 2 + round % 6);
+    if (polygon.ring_count() == 0 || polygon.points.size() < 3) continue;
+    SCOPED_TRACE("round " + std::to_string(round));
+    const TJunctionSearch expected = t_junctions_by_brute_force(polygon);
+    for (const RunContext& ctx : contexts.list) {
+      const Method method = &ctx == &contexts.list[1] ? Method::sweep_only : Method::automatic;
+      const TJunctionSearch found = check.find_t_junctions(polygon, ctx, method);
+      ASSERT_EQ(found.conflict.has_value(), expected.conflict.has_value());
+      if (found.conflict) {
+        EXPECT_TRUE(Reference(polygon).involved(*found.conflict));
+        continue;
+      }
+      ASSERT_EQ(found.junctions.size(), expected.junctions.size());
+      for (std::size_t k = 0; k < found.junctions.size(); ++k) {
+        EXPECT_EQ(found.junctions[k].edge, expected.junctions[k].edge);
+        EXPECT_EQ(found.junctions[k].vertex, expected.junctions[k].vertex);
+      }
+    }
+    (expected.conflict ? conflicts : junctions) += expected.conflict || !expected.junctions.empty();
+    if (::testing::Test::HasFailure()) break;
+  }
+  EXPECT_GT(junctions, 500) << "T-junctions only";  // both outcomes were exercised
+  EXPECT_GT(conflicts, 500);
+}
+
 /// Every corpus polygon up to 400k vertices (the largest coastline, 1.5M, is left to the
 /// engine's coast suite): the automatic check finds nothing in what the MANIFEST calls valid,
 /// agrees with the reference (up to 50k vertices), names an edge that is in a conflict, and

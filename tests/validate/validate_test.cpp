@@ -129,6 +129,62 @@ TEST(Validate, RejectsTouchingHoleTriangulatedAcrossTheHole) {
   EXPECT_GT(report.bad_edges, 0u);
 }
 
+TEST(Validate, CountsWhereAHoleTouchesTheOuterRing) {
+  // No ring passes a point twice, so the count holds with the touching point: a fan around a
+  // Steiner point (the dropped one-point hole, index 7) has 2 triangles too many.
+  Polygon polygon = touching_hole;
+  polygon.push_back({{3, 3}});
+  const Triangles triangles = {{0, 1, 6}, {1, 2, 6}, {6, 2, 7}, {2, 3, 7},
+                               {3, 5, 7}, {5, 6, 7}, {4, 5, 3}};
+  const auto report = check(polygon, triangles);
+  EXPECT_FALSE(report.valid);
+  EXPECT_EQ(report.expected_triangles, 5u);
+  EXPECT_EQ(report.bad_edges, 0u);
+  EXPECT_TRUE(has_message(report, "wrong triangle count: 7")) << messages(report);
+}
+
+// A 4x4 square (0..3) and a clockwise triangular hole (4..6) whose vertex 4 = (0,2) lies inside
+// the outer edge 3 -> 0 (a T-junction): that edge is matched by 3 -> 4 and 4 -> 0.
+const Polygon hole_on_edge = {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{0, 2}, {2, 3}, {2, 1}}};
+
+TEST(Validate, AcceptsBoundaryEdgeSplitWhereAHoleVertexLiesInsideIt) {
+  // Twice the areas: 4 + 4 + 4 + 8 + 4 + 4 = 28 = 2 * (16 - 2). Counted with the split: n = 8
+  // (7 vertices and the split), h = 1, m = 1: 6 triangles.
+  const Triangles triangles = {{3, 4, 5}, {3, 5, 2}, {2, 5, 6}, {2, 6, 1}, {1, 6, 0}, {0, 6, 4}};
+  const auto report = check(hole_on_edge, triangles);
+  EXPECT_TRUE(report.valid) << messages(report);
+  EXPECT_EQ(report.expected_triangles, 6u);
+  EXPECT_EQ(report.bad_edges, 0u);
+}
+
+TEST(Validate, RejectsTriangulationMissingTheSplit) {
+  // Triangles 0 and 1 use the outer edge 3 -> 0 whole and cover the hole's corner at (0, 2).
+  const Triangles triangles = {{3, 0, 6}, {3, 6, 5}, {3, 5, 2}, {2, 5, 6}, {2, 6, 1}, {1, 6, 0}};
+  const auto report = check(hole_on_edge, triangles);
+  EXPECT_FALSE(report.valid);
+  EXPECT_GT(report.bad_edges, 0u);
+}
+
+TEST(Validate, RejectsTriangleEdgeThroughABoundaryVertex) {
+  // Vertex 1 = (2,0) lies on the triangles' edge 0 -> 2: only the boundary's edges may be split.
+  const Polygon polygon = {{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}};
+  const auto report = check(polygon, {{0, 2, 3}, {0, 3, 4}});
+  EXPECT_FALSE(report.valid);
+  EXPECT_TRUE(has_message(report, "is not used by any triangle")) << messages(report);
+}
+
+TEST(Validate, DissolvesZeroWidthSpikes) {
+  // Out to (2, 6) and back along the same segment: no area, and not a vertex of the polygon
+  // (vertex 4 repeats vertex 2), so 3 triangles for the 5 kept vertices.
+  const Polygon polygon = {{{0, 0}, {4, 0}, {4, 4}, {2, 4}, {2, 6}, {2, 4}, {0, 4}}};
+  const auto report = check(polygon, {{0, 1, 2}, {0, 2, 3}, {0, 3, 6}});
+  EXPECT_TRUE(report.valid) << messages(report);
+  EXPECT_EQ(report.expected_triangles, 3u);
+  const auto tip = check(polygon, {{0, 1, 2}, {0, 2, 3}, {0, 3, 6}, {3, 2, 4}});
+  EXPECT_FALSE(tip.valid);
+  EXPECT_TRUE(has_message(tip, "is not a vertex of the cleaned polygon")) << messages(tip);
+}
+
 TEST(Validate, CleansRepeatedAndClosingPoints) {
   // Index 2 repeats index 1 and index 5 closes the ring: kept are 0, 1, 3, 4.
   const Polygon polygon = {{{0, 0}, {1, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}}};
