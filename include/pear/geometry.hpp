@@ -99,6 +99,8 @@ enum class Issue : std::uint8_t {
                      ///< the boundary and area unchanged; the tip is not used (warning)
   t_junction_split,  ///< the vertex lies inside an edge (of its own or another ring): the edge
                      ///< is split there and the vertex used on both sides (warning)
+  hole_outside_outer_ring,  ///< the hole is not inside the outer ring (not_simple)
+  hole_inside_hole,         ///< the hole lies inside another hole (not_simple)
 };
 
 /// The most threads Options::threads may ask for.

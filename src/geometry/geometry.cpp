@@ -44,6 +44,10 @@ const char* to_string(Issue issue) {
       return "spike_dissolved";
     case Issue::t_junction_split:
       return "t_junction_split";
+    case Issue::hole_outside_outer_ring:
+      return "hole_outside_outer_ring";
+    case Issue::hole_inside_hole:
+      return "hole_inside_hole";
   }
   return "unknown";
 }
@@ -76,6 +80,10 @@ const char* explain(Issue issue) {
     case Issue::t_junction_split:
       return "vertex lies inside an edge; the edge is split there and the vertex used on both "
              "sides";
+    case Issue::hole_outside_outer_ring:
+      return "hole lies outside the outer ring; the triangulation is a best effort";
+    case Issue::hole_inside_hole:
+      return "hole lies inside another hole; the triangulation is a best effort";
   }
   return "unknown issue";
 }

@@ -70,6 +70,18 @@ std::optional<std::uint32_t> Engine::split_t_junctions(const PolygonView& input,
   return simplicity_.find_violation(clean_, ctx);
 }
 
+Diagnostic Engine::why_not_clipped(const PolygonView& input, bool checked,
+                                   std::uint32_t best_effort_vertex) const {
+  // The check found no conflict, so the rings meet only at shared vertices: a hole in the wrong
+  // place is the one reason left that the input has (named exactly). Else the engine stopped.
+  if (checked)
+    if (const auto hole = find_misplaced_hole(clean_))
+      return locate(input,
+                    hole->outside_outer ? Issue::hole_outside_outer_ring : Issue::hole_inside_hole,
+                    clean_.original[hole->vertex]);
+  return locate(input, Issue::not_simple, best_effort_vertex);
+}
+
 bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                      std::vector<Diagnostic>& diagnostics, Status& status) {
   if (check_simplicity) {
@@ -95,8 +107,9 @@ bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunC
     touching_.untangle(boundary_);
     cycles_ = touching_.cycles(boundary_, 0, unjoined);
   });
+  // Nothing lies to the left of the hole's leftmost vertex: it is outside the outer ring.
   for (std::uint32_t hole : unjoined) {
-    diagnostics.push_back(locate(input, Issue::not_simple, boundary_.vertex[hole]));
+    diagnostics.push_back(locate(input, Issue::hole_outside_outer_ring, boundary_.vertex[hole]));
     status = Status::not_simple;
   }
   return true;
@@ -188,7 +201,7 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
   const Algorithm algorithm = resolve(options.algorithm, boundary_.size(), ctx.partitions);
   std::uint32_t best_effort_vertex = 0;
   if (!clip(algorithm, options, ctx, out, best_effort_vertex) && status == Status::ok) {
-    diagnostics.push_back(locate(input, Issue::not_simple, best_effort_vertex));
+    diagnostics.push_back(why_not_clipped(input, options.check_simplicity, best_effort_vertex));
     status = Status::not_simple;
   }
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.

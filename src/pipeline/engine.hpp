@@ -68,6 +68,9 @@ class Engine {
   std::optional<std::uint32_t> split_t_junctions(const PolygonView& input, const RunContext& ctx,
                                                  std::uint32_t violation,
                                                  std::vector<Diagnostic>& diagnostics);
+  /// Why clipping stopped short on a polygon whose check (when `checked`) found nothing.
+  Diagnostic why_not_clipped(const PolygonView& input, bool checked,
+                             std::uint32_t best_effort_vertex) const;
   Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
   FlatPolygon input_;

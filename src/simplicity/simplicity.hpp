@@ -114,6 +114,18 @@ void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContex
 TJunctionSearch find_t_junctions_in_slabs(const RingEdges& edges, std::uint32_t slabs,
                                           const RunContext& ctx);
 
+/// A hole that lies outside the outer ring, or inside another hole.
+struct MisplacedHole {
+  std::uint32_t vertex;  ///< a vertex of the hole no other ring shares (into polygon.points)
+  bool outside_outer;    ///< else inside another hole
+};
+
+/// For rings whose edges do not conflict (they meet only at shared vertices): the first hole,
+/// in ring order, that is not inside the outer ring or is inside another hole. Exact; near
+/// linear for real data (a ray per hole through horizontal bands of the edges). For polygons
+/// the engine could not triangulate, to name why.
+std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon);
+
 /// What the small check (SimplicityCheck::check_small) found.
 struct SmallVerdict {
   std::optional<std::uint32_t> violation;  ///< as find_violation's

@@ -114,6 +114,21 @@ class ExitCodes(Files):
         self.assertEqual(line["status"], "not_simple")
         self.assertIn("not_simple", r.stderr)
 
+    def test_not_simple_names_its_cause_not_an_earlier_warning(self):
+        # Hole 1 is dropped (zero area, a warning); hole 2 crosses the outer ring: the message
+        # names the crossing. A hole outside the outer ring is called that.
+        crossing = ('{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]],'
+                    '[[1,1],[2,2],[3,3],[1,1]],[[8,8],[8,9],[12,9],[12,8],[8,8]]]}')
+        r = pear("triangulate", "-", stdin=crossing)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("rings cross or overlap", r.stderr)
+        self.assertNotIn("zero area", r.stderr)
+        outside = ('{"type":"Polygon","coordinates":[[[0,0],[10,0],[10,10],[0,10],[0,0]],'
+                   '[[1,1],[2,2],[3,3],[1,1]],[[20,2],[20,4],[22,4],[22,2],[20,2]]]}')
+        r = pear("triangulate", "-", stdin=outside)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("ring 2, vertex 0: hole lies outside the outer ring", r.stderr)
+
     def test_usage_errors(self):
         corpus.require(SOUTH_AFRICA)
         for args, message in [

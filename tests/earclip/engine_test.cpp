@@ -153,6 +153,7 @@ TEST_P(Engine, HoleOutsideOuterIsReportedNotSimple) {
   EXPECT_EQ(result.status, Status::not_simple);
   ASSERT_FALSE(result.diagnostics.empty());
   EXPECT_EQ(result.diagnostics.back().ring, 1u);
+  EXPECT_EQ(result.diagnostics.back().issue, Issue::hole_outside_outer_ring);
 }
 
 INSTANTIATE_TEST_SUITE_P(Heuristics, Engine,

@@ -237,5 +237,29 @@ TEST(Refused, CrossingIsNamedNotTheTJunctionBeforeIt) {
   EXPECT_TRUE(ring == 2 || ring == 3) << ring;
 }
 
+TEST(Refused, HoleOutsideTheOuterRingIsNamed) {
+  const Ring outer = {{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  // To the left nothing lies left of the hole; to the right the outer ring does.
+  for (double x : {-20.0, 20.0}) {
+    const Polygon p = {outer, {{1, 1}, {1, 2}, {2, 2}}, {{x, 2}, {x, 4}, {x + 2, 4}, {x + 2, 2}}};
+    Issue issue;
+    std::size_t ring = 9;
+    EXPECT_EQ(status_of(p, issue, ring), Status::not_simple);
+    EXPECT_EQ(issue, Issue::hole_outside_outer_ring) << x;
+    EXPECT_EQ(ring, 2u);
+  }
+}
+
+TEST(Refused, HoleInsideAnotherHoleIsNamed) {
+  const Polygon p = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                     {{2, 2}, {2, 8}, {8, 8}, {8, 2}},
+                     {{4, 4}, {4, 5}, {5, 5}, {5, 4}}};
+  Issue issue;
+  std::size_t ring = 9;
+  EXPECT_EQ(status_of(p, issue, ring), Status::not_simple);
+  EXPECT_EQ(issue, Issue::hole_inside_hole);
+  EXPECT_EQ(ring, 2u);
+}
+
 }  // namespace
 }  // namespace pear

@@ -125,6 +125,18 @@ struct PolygonResult {
   double ms = 0;
 };
 
+/// The diagnostic that says why the status is not ok (warnings about what was repaired, such as
+/// a dropped hole, may come before it); the first when none matches.
+const Diagnostic* explaining(Status status, std::span<const Diagnostic> diagnostics) {
+  for (const Diagnostic& d : diagnostics) {
+    const bool placement =
+        d.issue == Issue::hole_outside_outer_ring || d.issue == Issue::hole_inside_hole;
+    if (status == Status::not_simple ? d.issue == Issue::not_simple || placement : d.is_error())
+      return &d;
+  }
+  return diagnostics.empty() ? nullptr : &diagnostics.front();
+}
+
 // Reports one polygon's result: its stats line, its problems (and the test build's fault).
 io::TriangulatedPolygon report_one(const Settings& s, const Polygon& polygon, PolygonResult result,
                                    const std::string& file, std::size_t index, Totals& totals,
@@ -140,9 +152,8 @@ io::TriangulatedPolygon report_one(const Settings& s, const Polygon& polygon, Po
   if (result.status != Status::ok) {
     totals.bad_input = true;
     ++totals.failures;
-    std::string why;
-    for (const Diagnostic& d : result.diagnostics)
-      if (why.empty() || d.is_error()) why = describe(d);
+    const Diagnostic* cause = explaining(result.status, result.diagnostics);
+    const std::string why = cause ? describe(*cause) : "";
     progress.message(file + ": polygon " + std::to_string(index) + ": " + to_string(result.status) +
                      (why.empty() ? "" : ": " + why));
   }
