@@ -60,9 +60,10 @@ struct Options {
   /// Threads for the parallel algorithms: 0 = the executor's concurrency (pear's default
   /// executor: all hardware threads), 1 = run everything on the calling thread.
   unsigned threads = 0;
-  /// How many parts the parallel algorithms cut the work into: 0 = the thread count. The output
-  /// depends on the algorithm, the options and this number, never on the threads or their
-  /// timing: fix it to get bit-identical results on any machine.
+  /// How many parts the parallel algorithms cut the work into: 0 = the thread count; above
+  /// max_partitions (4096) counts as 4096. The output depends on the algorithm, the options and
+  /// this number, never on the threads or their timing: fix it to get bit-identical results
+  /// on any machine.
   unsigned partitions = 0;
   /// Where parallel work runs; nullptr = pear's default executor (or a private one with
   /// `threads` threads when that differs from the default's concurrency).

@@ -37,8 +37,10 @@ std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic h
   if (partitions < 2) return entry;
   SharedBoundary s;
   std::size_t nodes = s.start(b, entry, ctx);
-  std::vector<ChainClipper> clippers(partitions);
-  std::vector<TriangleList> parts(partitions);
+  // A clipper (with its queue) for each chain there can be, not for each partition asked for.
+  const std::size_t most = std::min(partitions, nodes / min_chain_nodes);
+  std::vector<ChainClipper> clippers(most);
+  std::vector<TriangleList> parts(most);
   for (int round = 0; round < max_rounds; ++round) {
     const std::size_t chains = std::min(partitions, nodes / min_chain_nodes);
     if (chains < 2) break;

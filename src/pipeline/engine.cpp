@@ -193,7 +193,9 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
     if (options.delaunay) make_delaunay(input.points, clean_, out, ctx, delaunay);
     return Status::ok;
   }
-  ctx.partitions = options.partitions ? options.partitions : where.concurrency();
+  // Clamped before any stage sizes its work by it (a million parts once meant a million queues).
+  ctx.partitions =
+      std::min(options.partitions ? options.partitions : where.concurrency(), max_partitions);
   if (clean_.points.size() >= parallel_threshold || !sequential(options.algorithm))
     ctx.executor = where.get();
   if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;

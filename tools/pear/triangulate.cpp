@@ -41,8 +41,8 @@ quoted globs are expanded.
 options:
   --algorithm NAME    which triangulation algorithm (default auto):
 %s  --threads N         threads for the parallel algorithms (default: all hardware threads)
-  --partitions K      parts the parallel algorithms cut the work into (default: the thread
-                      count); the output depends on K, never on the threads
+  --partitions K      parts the parallel algorithms cut the work into, 1 to 4096 (default:
+                      the thread count); the output depends on K, never on the threads
   --heuristic top|fast  ear order: shortest diagonal weighted by shape (top, default), or
                       a walk along the boundary (fast: quickest, thinner triangles)
   --cdt               make the triangulation constrained Delaunay (exact edge flips); with
@@ -79,7 +79,7 @@ Settings parse(std::span<const std::string_view> arguments) {
     } else if (option == "--threads") {
       s.options.threads = static_cast<unsigned>(args.integer(1, 4096));
     } else if (option == "--partitions") {
-      s.options.partitions = static_cast<unsigned>(args.integer(1, 65536));
+      s.options.partitions = static_cast<unsigned>(args.integer(1, max_partitions));
     } else if (option == "--heuristic") {
       const std::string_view h = args.value();
       if (h != "top" && h != "fast") throw UsageError("--heuristic expects top or fast");

@@ -1,0 +1,78 @@
+// Options at their limits (issue 19's audit): the partitions are clamped before any stage sizes
+// its work by them, and the output depends on the partitions, never on the threads, for every
+// algorithm including automatic.
+#include <gtest/gtest.h>
+
+#include <climits>
+#include <string>
+
+#include "pear/generate.hpp"
+#include "pear/pear.hpp"
+#include "pear/validate.hpp"
+
+namespace pear {
+namespace {
+
+constexpr Algorithm algorithms[] = {Algorithm::automatic, Algorithm::sequential,
+                                    Algorithm::partition_and_cut, Algorithm::mark_and_cut,
+                                    Algorithm::divide_and_conquer};
+
+// --partitions 65536 on a square took 8 s and 6.3 GB (a chain clipper with a 4,096-bucket queue
+// per partition); 10^6 through the API escaped as std::bad_alloc and UINT_MAX spawned 4.3e9
+// tasks. Each now costs what the polygon needs (the test's time limit would catch a relapse).
+TEST(Options, HugePartitionCountsAreClampedEarly) {
+  const Polygon square = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}};
+  const Polygon koch = generate_polygon("koch", 3000, 1);
+  for (unsigned partitions : {65536u, 1'000'000u, UINT_MAX}) {
+    for (Algorithm algorithm : algorithms) {
+      for (bool delaunay : {false, true}) {
+        SCOPED_TRACE(std::to_string(partitions) + " partitions, algorithm " +
+                     std::to_string(static_cast<int>(algorithm)));
+        const Options options = {
+            .algorithm = algorithm, .delaunay = delaunay, .threads = 2, .partitions = partitions};
+        const auto small = triangulate(square, options);
+        ASSERT_EQ(small.status, Status::ok);
+        EXPECT_EQ(small.triangles.size(), 2u);
+        const auto larger = triangulate(koch, options);
+        ASSERT_EQ(larger.status, Status::ok);
+        EXPECT_TRUE(validate(koch, larger.triangles).valid);
+        // Above max_partitions every count is max_partitions.
+        const auto clamped = triangulate(koch, Options{.algorithm = algorithm,
+                                                       .delaunay = delaunay,
+                                                       .threads = 2,
+                                                       .partitions = max_partitions});
+        EXPECT_EQ(larger.triangles, clamped.triangles);
+      }
+    }
+  }
+}
+
+// automatic chose partition-and-cut only when the executor had more than one thread, so
+// --partitions 4 gave different files at --threads 1 and 2 (Newfoundland, Africa). The choice
+// depends on the size and the partitions only.
+TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
+  for (std::string_view kind : {"koch", "random-holes", "spiral"}) {
+    const Polygon polygon = generate_polygon(kind, 40000, 3);
+    for (Algorithm algorithm : algorithms) {
+      for (bool delaunay : {false, true}) {
+        SCOPED_TRACE(std::string(kind) + ", algorithm " +
+                     std::to_string(static_cast<int>(algorithm)) + (delaunay ? ", CDT" : ""));
+        const auto one = triangulate(
+            polygon, {.algorithm = algorithm, .delaunay = delaunay, .threads = 1, .partitions = 4});
+        const auto two = triangulate(
+            polygon, {.algorithm = algorithm, .delaunay = delaunay, .threads = 2, .partitions = 4});
+        ASSERT_EQ(one.status, Status::ok);
+        EXPECT_EQ(one.triangles, two.triangles);
+      }
+    }
+  }
+  // And automatic with 4 partitions is partition-and-cut on such a polygon, at any thread count.
+  const Polygon koch = generate_polygon("koch", 40000, 3);
+  EXPECT_EQ(
+      triangulate(koch, {.threads = 1, .partitions = 4}).triangles,
+      triangulate(koch, {.algorithm = Algorithm::partition_and_cut, .threads = 2, .partitions = 4})
+          .triangles);
+}
+
+}  // namespace
+}  // namespace pear
