@@ -296,6 +296,122 @@ class Inputs(Files):
             self.assertIs(line["valid"], True)
 
 
+def run_as_nobody():
+    """A command prefix that runs pear as user nobody (root reads any directory), or None."""
+    if os.geteuid() != 0:
+        return []
+    for tool in ("/usr/bin/setpriv", "/bin/setpriv"):
+        if os.path.exists(tool):
+            return [tool, "--reuid=65534", "--regid=65534", "--clear-groups"]
+    return None
+
+
+def built_with_asan():
+    with open(PEAR, "rb") as f:
+        return b"__asan_init" in f.read()
+
+
+class Audit(Files):
+    """The CLI findings of issue 19's audit of bad input."""
+
+    def polygon_files(self, folder, count):
+        os.makedirs(folder, exist_ok=True)
+        for i in range(count):
+            with open(os.path.join(folder, "p%02d.json" % i), "w") as f:
+                f.write('[[[0,0],[1,0],[1,1]]]')
+
+    def test_directory_walk_names_unreadable_subdirectory(self):
+        prefix = run_as_nobody()
+        if prefix is None:
+            self.skipTest("running as root without setpriv: no directory is unreadable")
+        top = os.path.join(self.dir.name, "d")
+        self.polygon_files(top, 20)
+        self.polygon_files(os.path.join(top, "locked"), 2)
+        self.polygon_files(os.path.join(top, "later"), 3)
+        os.chmod(self.dir.name, 0o755)
+        os.chmod(os.path.join(top, "locked"), 0)
+        try:
+            r = subprocess.run([*prefix, PEAR, "triangulate", "--stats", top],
+                               capture_output=True, text=True, timeout=60)
+            self.assertEqual(r.returncode, 1, r.stderr)
+            self.assertIn(os.path.join(top, "locked") + ": cannot read the directory: "
+                          "Permission denied", r.stderr)
+            self.assertEqual(len(stats_lines(r)), 23)  # the rest is processed
+            self.assertIn("24 files, 23 polygons, 1 failures", r.stderr)
+            os.chmod(top, 0)
+            r = subprocess.run([*prefix, PEAR, "triangulate", top],
+                               capture_output=True, text=True, timeout=60)
+            self.assertEqual(r.returncode, 1, r.stderr)
+            self.assertIn(top + ": cannot read the directory", r.stderr)
+        finally:
+            os.chmod(top, 0o755)
+            os.chmod(os.path.join(top, "locked"), 0o755)
+
+    def test_empty_directory_and_empty_polygon_are_named(self):
+        empty = os.path.join(self.dir.name, "empty")
+        os.makedirs(empty)
+        r = pear("triangulate", empty)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn(empty + ": no .json, .geojson, .wkt or .poly files", r.stderr)
+        for text in ['{"type":"Polygon","coordinates":[]}', "POLYGON EMPTY",
+                     '{"type":"FeatureCollection","features":[]}']:
+            with self.subTest(text):
+                r = pear("triangulate", "-", stdin=text)
+                self.assertEqual(r.returncode, 1)
+                self.assertIn("<stdin>: no polygon in it", r.stderr)
+
+    def test_a_file_named_expected_json_is_read_like_any_other(self):
+        folder = os.path.join(self.dir.name, "fixtures")
+        self.polygon_files(folder, 1)
+        with open(os.path.join(folder, "expected.json"), "w") as f:
+            f.write(SQUARE_WITH_HOLE)
+        r = pear("triangulate", "--stats", folder)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(sorted(os.path.basename(l["file"]) for l in stats_lines(r)),
+                         ["expected.json", "p00.json"])
+
+    def test_gzip_that_inflates_too_far_is_refused(self):
+        bomb = os.path.join(self.dir.name, "bomb.json.gz")
+        with open(bomb, "wb") as f:
+            f.write(gzip.compress(b" " * (65 << 20)))
+        r = pear("triangulate", bomb)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn(bomb + ": inflates past 67108864 bytes", r.stderr)
+
+    def test_generate_with_an_absurd_count_is_a_usage_error(self):
+        r = pear("generate", "holes", "99999999999999")
+        self.assertEqual(r.returncode, 2)
+        self.assertIn("N must be a positive integer up to 100000000", r.stderr)
+
+    def test_cannot_write_says_why(self):
+        missing = os.path.join(self.dir.name, "no", "such", "dir")
+        r = pear("triangulate", "-", "-o", os.path.join(missing, "out.obj"), stdin=SQUARE_WITH_HOLE)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("out.obj: No such file or directory", r.stderr)
+        r = pear("generate", "star", "10", "-o", os.path.join(missing, "star.json"))
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("star.json: No such file or directory", r.stderr)
+
+    def test_out_of_memory_names_the_file_and_goes_on(self):
+        if built_with_asan():
+            self.skipTest("AddressSanitizer reserves more address space than the limit leaves")
+        import resource
+        big = os.path.join(self.dir.name, "big.json")
+        self.assertEqual(pear("generate", "koch", "800000", "-o", big).returncode, 0)
+        small = self.write("small.json", SQUARE_WITH_HOLE)
+        limit = 250 << 20
+        r = subprocess.run([PEAR, "triangulate", "--stats", big, small], capture_output=True,
+                           text=True, timeout=120,
+                           preexec_fn=lambda: resource.setrlimit(resource.RLIMIT_AS,
+                                                                 (limit, limit)))
+        if r.returncode == 0:
+            self.skipTest("250 MB of address space were enough here")
+        self.assertEqual(r.returncode, 1, r.stderr)
+        self.assertIn(big + ": out of memory while", r.stderr)
+        self.assertNotIn("std::bad_alloc", r.stderr)
+        self.assertEqual([l["file"] for l in stats_lines(r)], [small])
+
+
 class StatsAndGenerate(Files):
     def test_ear_statistics(self):
         corpus.require(SOUTH_AFRICA)

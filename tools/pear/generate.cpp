@@ -1,6 +1,8 @@
 // `pear generate KIND N`: a synthetic polygon as GeoJSON, deterministic in --seed.
+#include <cerrno>
 #include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 
@@ -19,8 +21,8 @@ void print_help() {
   }
   std::printf(R"(usage: pear generate [OPTIONS] KIND N
 
-Writes a valid polygon of about N vertices of the family KIND as GeoJSON, the same for the
-same --seed. Kinds:%s
+Writes a valid polygon of about N vertices (at most 100000000) of the family KIND as GeoJSON,
+the same for the same --seed. Kinds:%s
 
 options:
   --seed S   the random seed (default 1)
@@ -29,6 +31,10 @@ options:
 )",
               kinds.c_str());
 }
+
+/// Above this the polygon (16 bytes a vertex, and its text) would not fit a machine's memory
+/// anyway: a usage error, not an allocation failure.
+constexpr std::size_t max_generated_vertices = 100'000'000;
 
 }  // namespace
 
@@ -59,8 +65,11 @@ int run_generate(std::span<const std::string_view> arguments) {
   std::size_t count = 0;
   const auto [ptr, ec] =
       std::from_chars(count_text.data(), count_text.data() + count_text.size(), count);
-  if (ec != std::errc() || ptr != count_text.data() + count_text.size() || count == 0)
-    throw UsageError("N must be a positive integer, not '" + std::string(count_text) + "'");
+  if (ec != std::errc() || ptr != count_text.data() + count_text.size() || count == 0 ||
+      count > max_generated_vertices)
+    throw UsageError("N must be a positive integer up to " +
+                     std::to_string(max_generated_vertices) + ", not '" + std::string(count_text) +
+                     "'");
   Polygon polygon;
   try {
     polygon = generate_polygon(kind, count, seed);
@@ -73,9 +82,11 @@ int run_generate(std::span<const std::string_view> arguments) {
     std::cout.flush();
     return success;
   }
+  errno = 0;
   std::ofstream out(*output, std::ios::binary);
-  io::write_geojson_polygons(out, polygons);
-  if (!out.flush()) throw std::runtime_error("cannot write " + *output);
+  if (out) io::write_geojson_polygons(out, polygons);
+  if (!out.flush())
+    throw std::runtime_error("cannot write " + *output + ": " + std::strerror(errno));
   return success;
 }
 

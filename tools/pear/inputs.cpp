@@ -28,38 +28,65 @@ bool is_polygon_file(const fs::path& path) {
   return false;
 }
 
-void add_directory(const fs::path& dir, std::vector<std::string>& out) {
-  std::vector<std::string> found;
-  std::error_code error;
-  for (auto it = fs::recursive_directory_iterator(dir, error); !error && it != fs::end(it);
-       it.increment(error)) {
-    if (it->is_regular_file() && is_polygon_file(it->path()) &&
-        it->path().filename() != "expected.json")  // earcut's expected counts, not a polygon
-      found.push_back(it->path().string());
+/// Walks `top` directory by directory (not following links to directories), so that one that
+/// cannot be read is named and the others are still walked.
+void add_directory(const fs::path& top, std::vector<Input>& out) {
+  std::vector<Input> found;
+  std::vector<fs::path> pending{top};
+  while (!pending.empty()) {
+    const fs::path dir = std::move(pending.back());
+    pending.pop_back();
+    std::error_code error;
+    for (fs::directory_iterator it(dir, error); !error && it != fs::directory_iterator();
+         it.increment(error)) {
+      std::error_code ignored;  // an entry that vanished or cannot be examined is no input
+      if (it->is_symlink(ignored) ? false : it->is_directory(ignored))
+        pending.push_back(it->path());
+      else if (it->is_regular_file(ignored) && is_polygon_file(it->path()))
+        found.push_back({it->path().string(), {}});
+    }
+    if (error) found.push_back({dir.string(), "cannot read the directory: " + error.message()});
   }
-  std::sort(found.begin(), found.end());
+  if (found.empty())
+    found.push_back({top.string(), "no .json, .geojson, .wkt or .poly files (or .gz) in it"});
+  std::sort(found.begin(), found.end(),
+            [](const Input& a, const Input& b) { return a.name < b.name; });
   out.insert(out.end(), found.begin(), found.end());
 }
 
-void add(const std::string& name, std::vector<std::string>& out) {
+void add(const std::string& name, std::vector<Input>& out) {
   std::error_code error;
   if (fs::is_directory(name, error)) {
     add_directory(name, out);
   } else {
-    out.push_back(name);
+    out.push_back({name, {}});
   }
 }
 
 std::string read_gzip(const std::string& name) {
 #if PEAR_HAVE_ZLIB
+  std::error_code size_error;
+  const std::uintmax_t packed = fs::file_size(name, size_error);
+  const std::size_t limit =
+      size_error ? gzip_inflate_floor
+                 : std::max<std::size_t>(gzip_inflate_floor, gzip_max_ratio * packed);
   gzFile file = gzopen(name.c_str(), "rb");
   if (file == nullptr)
     throw io::ParseError(name, 0, 0, 0, std::string("cannot open: ") + std::strerror(errno));
   std::string text;
   char chunk[1 << 16];
   int n = 0;
-  while ((n = gzread(file, chunk, sizeof chunk)) > 0)
+  while ((n = gzread(file, chunk, sizeof chunk)) > 0) {
     text.append(chunk, static_cast<std::size_t>(n));
+    if (text.size() > limit) {
+      gzclose(file);
+      throw io::ParseError(name, 0, 0, 0,
+                           "inflates past " + std::to_string(limit) + " bytes, over " +
+                               std::to_string(gzip_max_ratio) + " times its " +
+                               std::to_string(packed) +
+                               ": refused as a likely decompression bomb (gunzip it to read it)");
+    }
+  }
   int code = 0;
   const std::string error = n < 0 ? gzerror(file, &code) : "";
   gzclose(file);
@@ -72,8 +99,8 @@ std::string read_gzip(const std::string& name) {
 
 }  // namespace
 
-std::vector<std::string> expand_inputs(std::span<const std::string_view> args) {
-  std::vector<std::string> out;
+std::vector<Input> expand_inputs(std::span<const std::string_view> args) {
+  std::vector<Input> out;
   for (const std::string_view arg_view : args) {
     const std::string arg(arg_view);
     std::error_code error;
@@ -85,14 +112,16 @@ std::vector<std::string> expand_inputs(std::span<const std::string_view> args) {
     if (::glob(arg.c_str(), 0, nullptr, &matches) == 0) {
       for (std::size_t i = 0; i < matches.gl_pathc; ++i) add(matches.gl_pathv[i], out);
     } else {
-      out.push_back(arg);  // nothing matched: reading it says so
+      out.push_back({arg, {}});  // nothing matched: reading it says so
     }
     globfree(&matches);
   }
   return out;
 }
 
-std::vector<Polygon> read_input(const std::string& name, const io::ReadOptions& options) {
+std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options) {
+  const std::string& name = input.name;
+  if (!input.problem.empty()) throw io::ParseError(name, 0, 0, 0, input.problem);
   if (name == "-") {
     std::string text(std::istreambuf_iterator<char>(std::cin), {});
     return io::read_text(text, io::guess_format("", text), "<stdin>", options);

@@ -13,15 +13,28 @@
 
 namespace pear::cli {
 
-/// The files named by the arguments: "-" (stdin) and existing files as given, directories
-/// walked recursively for .json/.geojson/.wkt/.poly (optionally .gz) files in name order, other
-/// arguments expanded as globs. An argument that names nothing is kept, so reading it reports
-/// the problem in order with the other files.
-std::vector<std::string> expand_inputs(std::span<const std::string_view> args);
+/// One input: a file to read, or a problem found while listing the inputs (a directory that
+/// cannot be read, one with no polygon files), reported in order with the files.
+struct Input {
+  std::string name;
+  std::string problem;  ///< empty when `name` is to be read
+};
+
+/// The inputs the arguments name: "-" (stdin) and existing files as given, directories walked
+/// recursively for .json/.geojson/.wkt/.poly (optionally .gz) files in name order (a directory
+/// that cannot be read is an input with its problem, and the walk goes on), other arguments
+/// expanded as globs. An argument that names nothing is kept, so reading it reports the
+/// problem in order with the other files.
+std::vector<Input> expand_inputs(std::span<const std::string_view> args);
+
+/// A .gz may inflate to at most this many bytes and this many times its size (beyond both, it
+/// is refused as a likely decompression bomb): plain files of that size are read as they are.
+inline constexpr std::size_t gzip_inflate_floor = std::size_t{64} << 20;
+inline constexpr std::size_t gzip_max_ratio = 100;
 
 /// Reads and parses one input (gzip by zlib when the name ends in .gz). Throws
-/// pear::io::ParseError naming the file on any problem.
-std::vector<Polygon> read_input(const std::string& name, const io::ReadOptions& options);
+/// pear::io::ParseError naming the file on any problem, the input's own problem included.
+std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options);
 
 /// Progress on stderr, only when it is a terminal and there are many files; then a summary.
 class Progress {

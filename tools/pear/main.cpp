@@ -1,6 +1,7 @@
 // pear: triangulate polygons from GeoJSON, WKT and .poly files; see `pear --help`.
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,9 @@ int main(int argc, char** argv) {
   } catch (const pear::cli::UsageError& e) {
     std::fprintf(stderr, "pear: %s\n(see 'pear --help')\n", e.what());
     return pear::cli::usage;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "pear: out of memory\n");
+    return pear::cli::bad_input;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pear: %s\n", e.what());
     return pear::cli::bad_input;

@@ -1,5 +1,7 @@
 #include "output.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -46,9 +48,15 @@ std::string stem(const std::string& input) {
   return path.stem().string();
 }
 
+/// "cannot write PATH: REASON", the reason from errno right after the failed call.
+[[noreturn]] void cannot_write(const std::string& path) {
+  throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+}
+
 std::ofstream open(const fs::path& path) {
+  errno = 0;
   std::ofstream out(path, std::ios::binary);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  if (!out) cannot_write(path.string());
   return out;
 }
 
@@ -127,12 +135,12 @@ void write_output(const OutputPlan& plan, const std::string& input,
     std::ofstream node = open(fs::path(path).concat(".node"));
     std::ofstream ele = open(fs::path(path).concat(".ele"));
     io::write_node_ele(node, ele, results);
-    if (!node || !ele) throw std::runtime_error("cannot write " + path.string() + ".node/.ele");
+    if (!node.flush() || !ele.flush()) cannot_write(path.string() + ".node/.ele");
     return;
   }
   std::ofstream out = open(path);
   write(format, out, input, results);
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  if (!out.flush()) cannot_write(path.string());
 }
 
 }  // namespace pear::cli

@@ -43,16 +43,18 @@ int run_stats(std::span<const std::string_view> arguments) {
     }
   }
   if (args.positionals().empty()) throw UsageError("stats needs at least one FILE (or '-')");
-  const std::vector<std::string> files = expand_inputs(args.positionals());
-  Progress progress(files.size());
+  const std::vector<Input> inputs = expand_inputs(args.positionals());
+  Progress progress(inputs.size());
   Triangulator triangulator;
   std::size_t polygons_total = 0, failures = 0;
   if (!json)
     std::printf("%9s %6s %9s %9s %9s %9s %11s  %s\n", "vertices", "holes", "convex", "reflex",
                 "ears", "ears/vert", "ears/convex", "file:polygon");
-  for (const std::string& file : files) {
+  for (const Input& input : inputs) {
+    const std::string& file = input.name;
     try {
-      const std::vector<Polygon> polygons = read_input(file, read);
+      const std::vector<Polygon> polygons = read_input(input, read);
+      if (polygons.empty()) throw io::ParseError(file, 0, 0, 0, "no polygon in it");
       for (std::size_t i = 0; i < polygons.size(); ++i, ++polygons_total) {
         const EarStatistics e = triangulator.ear_statistics(polygons[i]);
         const std::size_t holes = polygons[i].empty() ? 0 : polygons[i].size() - 1;
@@ -71,6 +73,9 @@ int run_stats(std::span<const std::string_view> arguments) {
       }
     } catch (const io::ParseError& e) {
       progress.message(e.what());
+      ++failures;
+    } catch (const std::bad_alloc&) {
+      progress.message(file + ": out of memory");
       ++failures;
     }
     std::fflush(stdout);

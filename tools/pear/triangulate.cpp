@@ -117,6 +117,11 @@ struct Totals {
   bool invalid = false;
 };
 
+/// How messages name an input.
+std::string display_name(const Input& input) {
+  return input.name == "-" ? "<stdin>" : input.name;
+}
+
 /// What the batch gave for one polygon, with indices into the polygon's own points.
 struct PolygonResult {
   std::vector<std::array<std::uint32_t, 3>> triangles;
@@ -201,6 +206,11 @@ class Group {
   /// file, in the order the files came.
   void flush(const Settings& s, const OutputPlan& plan, Totals& totals, Progress& progress) {
     if (files_.empty()) return;
+    const auto fail = [&](const std::string& message) {
+      progress.message(message);
+      totals.bad_input = true;
+      ++totals.failures;
+    };
     std::vector<double> coordinates;
     std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
     coordinates.reserve(2 * vertices_);
@@ -216,8 +226,24 @@ class Group {
     RunProfile profile;
     Options options = s.options;
     options.profile = &profile;  // each polygon's time, for --stats
-    const BatchTriangulation<> batch =
-        triangulate_batch(PolygonBatch{coordinates, ring_offsets, polygon_offsets}, options);
+    BatchTriangulation<> batch;
+    try {
+      batch = triangulate_batch(PolygonBatch{coordinates, ring_offsets, polygon_offsets}, options);
+    } catch (const std::bad_alloc&) {
+      // The files together did not fit: each alone may, and one that does not is named.
+      std::vector<File> files = std::move(files_);
+      clear();
+      for (File& f : files) {
+        if (files.size() == 1) {
+          fail(f.name + ": out of memory while triangulating it");
+          progress.advance();
+          continue;
+        }
+        add(std::move(f.name), std::move(f.polygons));
+        flush(s, plan, totals, progress);
+      }
+      return;
+    }
     std::size_t p = 0;
     for (File& f : files_) {
       try {
@@ -229,16 +255,15 @@ class Group {
           ++totals.polygons;
         }
         if (plan.format) write_output(plan, f.name, results);
-      } catch (const std::exception& e) {  // an unwritable output
-        progress.message(e.what());
-        totals.bad_input = true;
-        ++totals.failures;
+      } catch (const std::bad_alloc&) {
+        fail(f.name + ": out of memory while reporting or writing it");
+      } catch (const std::exception& e) {  // an unwritable output, named with the reason
+        fail(e.what());
       }
       std::fflush(stdout);
       progress.advance();
     }
-    files_.clear();
-    vertices_ = 0;
+    clear();
   }
 
  private:
@@ -246,6 +271,11 @@ class Group {
     std::string name;
     std::vector<Polygon> polygons;
   };
+
+  void clear() {
+    files_.clear();
+    vertices_ = 0;
+  }
 
   /// Polygon p's result out of the batch, its indices made local to the polygon again.
   static PolygonResult take(const BatchTriangulation<>& batch, const RunProfile& profile,
@@ -273,24 +303,33 @@ class Group {
 
 int run_triangulate(std::span<const std::string_view> arguments) {
   const Settings s = parse(arguments);
-  const std::vector<std::string> files = expand_inputs(s.inputs);
-  const OutputPlan plan = plan_output(s.output, s.format, files.size());
-  Progress progress(files.size());
+  const std::vector<Input> inputs = expand_inputs(s.inputs);
+  const OutputPlan plan = plan_output(s.output, s.format, inputs.size());
+  Progress progress(inputs.size());
   Totals totals;
   Group group;
-  for (const std::string& file : files) {
+  for (const Input& input : inputs) {
+    std::string problem;
     std::vector<Polygon> polygons;
     try {
-      polygons = read_input(file, s.read);
-    } catch (const std::exception& e) {        // a ParseError naming the place
+      polygons = read_input(input, s.read);
+      if (polygons.empty()) problem = display_name(input) + ": no polygon in it";
+    } catch (const io::ParseError& e) {  // naming the place
+      problem = e.what();
+    } catch (const std::bad_alloc&) {
+      problem = display_name(input) + ": out of memory while reading it";
+    } catch (const std::exception& e) {
+      problem = display_name(input) + ": " + e.what();
+    }
+    if (!problem.empty()) {
       group.flush(s, plan, totals, progress);  // the messages stay in the order of the files
-      progress.message(e.what());
+      progress.message(problem);
       totals.bad_input = true;
       ++totals.failures;
       progress.advance();
       continue;
     }
-    group.add(file, std::move(polygons));
+    group.add(input.name, std::move(polygons));
     if (group.full()) group.flush(s, plan, totals, progress);
   }
   group.flush(s, plan, totals, progress);
