@@ -119,8 +119,9 @@ struct Placement {
   unsigned flags;
   int exponent;
   int offset;
-  pear::Point operator()(const std::array<int, 2>& p) const {
-    double x = p[0], y = p[1];
+  pear::Point operator()(const std::array<int, 2>& p) const { return (*this)(p[0], p[1]); }
+  /// Exact for the quarters and eighths of the T-junction triangles too.
+  pear::Point operator()(double x, double y) const {
     if (flags & cell_flags::place) {
       x = std::ldexp(x + offset, exponent);
       y = std::ldexp(y + offset, exponent);
@@ -142,6 +143,33 @@ pear::Ring make_ring(const Loop& loop, const Placement& place, std::size_t rotat
   std::rotate(ring.begin(), ring.begin() + rotation % ring.size(), ring.end());
   if (place.flags & cell_flags::reverse_rings) std::reverse(ring.begin(), ring.end());
   return ring;
+}
+
+/// Triangular holes on unit edges of the loops picked by the bytes left (cell_polygon.hpp):
+/// each inside the set cell left of its edge, within a quarter of the edge's midpoint, so no
+/// two meet (nor anything else) but at the apex, which lies inside the ring's edge.
+std::size_t add_t_junctions(ByteReader& bytes, const std::vector<Loop>& loops,
+                            const Placement& place, pear::Polygon& polygon) {
+  std::size_t unit_edges = 0;
+  for (const Loop& loop : loops) unit_edges += loop.points.size();
+  std::vector<std::size_t> picked;
+  while (!bytes.empty() && picked.size() < 8) {
+    const std::size_t edge = bytes.u16() % unit_edges;
+    if (std::find(picked.begin(), picked.end(), edge) != picked.end()) continue;
+    picked.push_back(edge);
+    std::size_t k = edge, l = 0;
+    while (k >= loops[l].points.size()) k -= loops[l++].points.size();
+    const auto& points = loops[l].points;
+    const auto& from = points[(k + points.size() - 1) % points.size()];
+    const auto& to = points[k];
+    const double dx = to[0] - from[0], dy = to[1] - from[1];  // a unit step
+    const double mx = from[0] + 0.5 * dx, my = from[1] + 0.5 * dy;
+    const double lx = -dy, ly = dx;  // towards the cells, on the loop's left
+    polygon.push_back({place(mx, my),
+                       place(mx + 0.25 * lx + 0.125 * dx, my + 0.25 * ly + 0.125 * dy),
+                       place(mx + 0.25 * lx - 0.125 * dx, my + 0.25 * ly - 0.125 * dy)});
+  }
+  return picked.size();
 }
 
 }  // namespace
@@ -182,6 +210,10 @@ std::optional<CellPolygon> decode_cell_polygon(ByteReader& bytes) {
   // Every triangle's angles sum to two quarter turns, and all its corners are ring corners.
   require(quarter_turns % 2 == 0, "cell polygon: odd angle sum");
   result.triangles = quarter_turns / 2;
+  // A triangle standing on an edge: its exterior angles (5 half turns) at its three corners,
+  // less the half turn its apex takes from the straight angle there: 4 more triangles.
+  result.t_junctions = add_t_junctions(bytes, loops, place, result.polygon);
+  result.triangles += 4 * result.t_junctions;
   return result;
 }
 

@@ -4,7 +4,11 @@
 //
 // Layout: width and height bytes (2 + b % 15 cells), a flags byte (below), a start byte (which
 // set cell seeds the component), an exponent byte (int8) and a 16-bit offset for the exact
-// placement, then the cells' bits row by row (missing bytes are empty cells).
+// placement, then the cells' bits row by row (missing bytes are empty cells). Bytes left after
+// that make T-junctions: each 16 bits pick a unit edge of the boundary (modulo their number),
+// and a triangular hole stands on its midpoint inside the cell beside it (apex at the midpoint,
+// a quarter of a cell high, a quarter wide), so the apex lies exactly inside a ring's edge. At
+// most 8; each adds 4 triangles to every triangulation.
 #pragma once
 
 #include <cstddef>
@@ -24,8 +28,9 @@ inline constexpr unsigned place = 16;            ///< (x + offset) * 2^exponent,
 }  // namespace cell_flags
 
 struct CellPolygon {
-  pear::Polygon polygon;      ///< outer ring first
-  std::size_t triangles = 0;  ///< the triangle count of every triangulation of it
+  pear::Polygon polygon;        ///< outer ring first
+  std::size_t triangles = 0;    ///< the triangle count of every triangulation of it
+  std::size_t t_junctions = 0;  ///< triangular holes standing on an edge (the last holes)
 };
 
 /// Nothing when no cell is set.

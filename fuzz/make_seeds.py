@@ -19,6 +19,7 @@ OUT = ROOT / "corpus" / "fuzz"
 manifest = []
 
 SMALL_GRID, ANY_DOUBLE, SCALED_GRID = 0, 2, 3
+T_JUNCTION_MOVES = 32
 
 
 def write(target, name, data, source):
@@ -78,6 +79,21 @@ SHAPES = {
     "hole-in-reflex-corner": [[(0, 0), (4, 0), (4, 4), (8, 4), (8, 8), (0, 8)],
                               [(4, 4), (4, 6), (2, 6), (2, 4)]],
     "hole-chord": [[(0, 0), (4, 0), (8, 0), (8, 8), (4, 8), (0, 8)], [(4, 0), (6, 4), (4, 8), (2, 4)]],
+    # Issue 19: a vertex exactly inside another edge (split), zero-width antennas (dissolved).
+    "t-junction-hole-on-hole": [[(0, 0), (10, 0), (10, 10), (0, 10)], [(2, 2), (2, 6), (8, 6), (8, 2)],
+                                [(5, 6), (4, 8), (6, 8)]],
+    "t-junction-own-edge": [[(0, 0), (4, 0), (4, 4), (2, 0), (0, 4)]],
+    "t-junction-several": [[(0, 0), (12, 0), (12, 8), (0, 8)], [(3, 0), (2, 2), (4, 2)],
+                           [(6, 0), (5, 2), (6, 2)], [(6, 0), (7, 2), (8, 2)], [(10, 0), (9, 2), (11, 2)]],
+    "antenna": [[(0, 0), (4, 0), (4, 4), (2, 4), (2, 6), (2, 8), (2, 6), (2, 4), (0, 4)]],
+}
+
+# T-junction moves (ring_bytes.hpp, header bit 5): (vertex, edge, eighths) per move.
+MOVES = {
+    "square-hole": [(4, 0, 3)],
+    "holes-touching": [(3, 0, 3), (9, 7, 1)],
+    "nested-holes": [(4, 0, 3), (8, 5, 3)],
+    "collinear-run": [(7, 1, 0)],
 }
 
 
@@ -87,6 +103,10 @@ def degenerate_seeds():
               f"corpus/earcut/{path.name}")
     for name, rings in SHAPES.items():
         write("degenerate", f"grid-{name}", ring_bytes(rings, SMALL_GRID), "hand-made")
+    for name, moves in MOVES.items():
+        data = ring_bytes(SHAPES[name], SMALL_GRID | T_JUNCTION_MOVES)
+        data[3:3] = [len(moves) - 1] + [b for move in moves for b in move]
+        write("degenerate", f"moves-{name}", data, f"grid-{name} with T-junction moves")
     square_hole = SHAPES["square-hole"]
     for exponent in (-100, -50, 50, 100, 127, -128):  # 2^(2e): both range limits crossed
         write("degenerate", f"scaled-{exponent}", ring_bytes(square_hole, SCALED_GRID, 14, exponent),
@@ -138,6 +158,11 @@ def cell_seeds():
     for k in range(6):
         rows = random_cells(rng, 8 + k, 0.55 + 0.05 * (k % 3))
         seeds.append((f"cells-random-{k}", cell_bytes(rows, k % 2, rng.randrange(256))))
+    # Triangular holes standing on unit edges (T-junctions): 16 bits a pick after the cells.
+    for name, flags, picks in (("ring", 0, [0, 5, 13]), ("many-holes", 3, [1, 40, 77, 90]),
+                               ("comb", 2, [3, 17, 30]), ("checkerboard", 1, [2, 9, 60, 61])):
+        extra = [b for pick in picks for b in (pick & 0xFF, pick >> 8)]
+        seeds.append((f"cells-t-junctions-{name}", cell_bytes(CELLS[name], flags) + extra))
     return seeds
 
 

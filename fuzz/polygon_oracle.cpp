@@ -146,6 +146,56 @@ pear::Polygon drop_repeated_points(const pear::Polygon& polygon) {
   return rings;
 }
 
+namespace {
+
+/// The ring turns straight back at b (a != b != c): collinear, b not strictly between.
+bool turns_back(const Point& a, const Point& b, const Point& c) {
+  return orient2d(a, b, c) == 0 && !inside_segment(a, c, b);
+}
+
+void dissolve_spikes(Ring& ring) {
+  for (bool again = true; again && ring.size() >= 3;) {
+    again = false;
+    for (std::size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
+      const std::size_t n = ring.size();
+      const Point &a = ring[(i + n - 1) % n], &b = ring[i], &c = ring[(i + 1) % n];
+      if (a == b || turns_back(a, b, c)) {
+        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
+        again = true;
+        break;
+      }
+    }
+  }
+  if (ring.size() >= 2 && ring.front() == ring.back()) ring.pop_back();
+}
+
+}  // namespace
+
+pear::Polygon repair(const pear::Polygon& polygon) {
+  pear::Polygon rings = drop_repeated_points(polygon);
+  for (Ring& ring : rings) dissolve_spikes(ring);
+  std::vector<Point> all;
+  for (const Ring& ring : rings) all.insert(all.end(), ring.begin(), ring.end());
+  std::sort(all.begin(), all.end(), lexicographic_less);
+  all.erase(std::unique(all.begin(), all.end()), all.end());
+  pear::Polygon split;
+  for (const Ring& ring : rings) {
+    Ring& out = split.emplace_back();
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const Point &a = ring[i], &b = ring[(i + 1) % ring.size()];
+      out.push_back(a);
+      std::vector<Point> inside;
+      for (const Point& p : all)
+        if (inside_segment(a, b, p)) inside.push_back(p);
+      // Sorted from a towards b: by x then y, reversed when b comes first.
+      std::sort(inside.begin(), inside.end(), lexicographic_less);
+      if (lexicographic_less(b, a)) std::reverse(inside.begin(), inside.end());
+      out.insert(out.end(), inside.begin(), inside.end());
+    }
+  }
+  return split;
+}
+
 PolygonFacts examine(const pear::Polygon& polygon) {
   PolygonFacts facts;
   for (const Ring& ring : polygon)
@@ -153,7 +203,7 @@ PolygonFacts examine(const pear::Polygon& polygon) {
       if (!accepted_coordinate(p.x) || !accepted_coordinate(p.y))
         facts.coordinates_in_range = false;
   if (!facts.coordinates_in_range || polygon.empty()) return facts;
-  const pear::Polygon rings = drop_repeated_points(polygon);
+  const pear::Polygon rings = repair(polygon);
   facts.holes = rings.size() - 1;
   std::vector<Point> all;
   for (const Ring& ring : rings) {

@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
+#include <vector>
 
 namespace fuzz {
 namespace {
@@ -46,11 +48,34 @@ struct PointDecoder {
   }
 };
 
+/// The T-junction mutator (ring_bytes.hpp): vertex v moved onto edge e at k/8 of its length.
+struct Move {
+  std::uint8_t vertex, edge, eighths;
+};
+
+void move_onto_edge(pear::Polygon& rings, const Move& move, std::size_t total) {
+  std::vector<std::pair<std::size_t, std::size_t>> at;  // (ring, index) of each vertex
+  for (std::size_t r = 0; r < rings.size(); ++r)
+    for (std::size_t i = 0; i < rings[r].size(); ++i) at.emplace_back(r, i);
+  if (total < 2 || at.size() != total) return;
+  const auto [vr, vi] = at[move.vertex % total];
+  const auto [er, ei] = at[move.edge % total];
+  const pear::Ring& ring = rings[er];
+  const pear::Point a = ring[ei], b = ring[(ei + 1) % ring.size()];
+  const double t = (1 + move.eighths % 7) / 8.0;
+  rings[vr][vi] = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
+
 }  // namespace
 
 pear::Polygon decode_rings(ByteReader& bytes, std::uint8_t header, bool keep_non_finite) {
   const PointDecoder decoder{static_cast<CoordinateMode>(header & 3), 2 + bytes.byte() % 15,
                              2 * static_cast<std::int8_t>(bytes.byte()), keep_non_finite};
+  std::vector<Move> moves;
+  if (header & t_junction_moves) {
+    moves.resize(1 + bytes.byte() % 4);
+    for (Move& m : moves) m = {bytes.byte(), bytes.byte(), bytes.byte()};
+  }
   pear::Polygon rings;
   std::size_t total = 0;
   while (!bytes.empty() && rings.size() < 32 && total < max_vertices) {
@@ -59,6 +84,7 @@ pear::Polygon decode_rings(ByteReader& bytes, std::uint8_t header, bool keep_non
     for (std::size_t i = 0; i < count && total < max_vertices; ++i, ++total)
       ring.push_back(decoder.next(bytes));
   }
+  for (const Move& m : moves) move_onto_edge(rings, m, total);
   return rings;
 }
 

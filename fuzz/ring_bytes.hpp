@@ -2,9 +2,15 @@
 // small integer grid (collinear runs, repeated points, touching vertices, zero-area spikes
 // come often) or arbitrary doubles of any magnitude.
 //
-// Layout: a header byte (bits 0-1 the coordinate mode below; the other bits are the target's),
-// a grid byte g (grid of 2 + g % 15 values per axis), an exponent byte e (int8), then rings, each
-// a count byte and that many points. At most 32 rings and max_vertices points in all.
+// Layout: a header byte (bits 0-1 the coordinate mode below, bit 5 T-junction moves; the other
+// bits are the target's), a grid byte g (grid of 2 + g % 15 values per axis), an exponent byte
+// e (int8), with bit 5 a count byte c and 1 + c % 4 moves of 3 bytes, then rings, each a count
+// byte and that many points. At most 32 rings and max_vertices points in all.
+//
+// A move (the T-junction mutator) puts a vertex exactly onto another edge: vertex v (first
+// byte, modulo the vertices) goes to a + k/8 (b - a) on edge a-b (second byte picks the edge's
+// start vertex, third k = 1 + byte % 7). On the grids that point is exact, so the vertex lies
+// inside the edge, and often at a lattice point another ring uses too.
 #pragma once
 
 #include <cstddef>
@@ -23,6 +29,7 @@ enum class CoordinateMode : std::uint8_t {
 };
 
 inline constexpr std::size_t max_vertices = 256;
+inline constexpr std::uint8_t t_junction_moves = 32;  ///< header bit
 
 /// Decodes the rings after the header byte. Non-finite doubles are kept only when asked.
 pear::Polygon decode_rings(ByteReader& bytes, std::uint8_t header, bool keep_non_finite = false);
