@@ -153,20 +153,19 @@ bool turns_back(const Point& a, const Point& b, const Point& c) {
   return orient2d(a, b, c) == 0 && !inside_segment(a, c, b);
 }
 
+/// In rounds, as the README says: all tips of the ring at once, then repeats merged, again.
 void dissolve_spikes(Ring& ring) {
-  for (bool again = true; again && ring.size() >= 3;) {
-    again = false;
-    for (std::size_t i = 0; i < ring.size() && ring.size() >= 3; ++i) {
-      const std::size_t n = ring.size();
-      const Point &a = ring[(i + n - 1) % n], &b = ring[i], &c = ring[(i + 1) % n];
-      if (a == b || turns_back(a, b, c)) {
-        ring.erase(ring.begin() + static_cast<std::ptrdiff_t>(i));
-        again = true;
-        break;
-      }
-    }
+  while (ring.size() >= 3) {
+    const std::size_t n = ring.size();
+    Ring kept;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!turns_back(ring[(i + n - 1) % n], ring[i], ring[(i + 1) % n])) kept.push_back(ring[i]);
+    if (kept.size() == n) return;
+    ring.clear();
+    for (const Point& p : kept)
+      if (ring.empty() || !(ring.back() == p)) ring.push_back(p);
+    while (ring.size() > 1 && ring.front() == ring.back()) ring.pop_back();
   }
-  if (ring.size() >= 2 && ring.front() == ring.back()) ring.pop_back();
 }
 
 }  // namespace

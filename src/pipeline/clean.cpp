@@ -65,50 +65,77 @@ bool folds_back(const Point& a, const Point& b, const Point& c) {
 }
 
 /// Appends ring `ring` of the input without repeated consecutive points (the first occurrence
-/// stays) nor a repeated closing point, and dissolves its zero-width spikes and antennas: a tip
-/// where the ring folds back leaves, which may merge its neighbours (A-B-A becomes A) or make a
-/// new tip (A-B-C-B-A goes entirely), until none is left; each tip is named in a warning. The
-/// boundary as a chain of segments is unchanged, so is the area. One pass with the output as a
-/// stack, then the seam where the ring closes.
-void append_ring(const PolygonView& in, std::size_t ring, CleanPolygon& out,
-                 std::vector<Diagnostic>& diagnostics) {
-  auto& pts = out.points;
-  auto& original = out.original;
-  const std::size_t first = pts.size();
-  const auto drop_tip = [&](std::size_t k) {
-    diagnostics.push_back({Issue::spike_dissolved, ring, original[k] - in.ring_offsets[ring]});
-  };
+/// stays) nor a repeated closing point.
+void append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& out) {
+  const std::size_t first = out.points.size();
   for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
-    const Point& p = in.points[i];
-    while (pts.size() >= first + 2 && !(pts.back() == p) &&
-           folds_back(pts[pts.size() - 2], pts.back(), p)) {
-      drop_tip(pts.size() - 1);
-      pts.pop_back();
-      original.pop_back();
-    }
-    if (pts.size() > first && pts.back() == p) continue;
-    pts.push_back(p);
-    original.push_back(i);
+    if (out.points.size() > first && out.points.back() == in.points[i]) continue;
+    out.points.push_back(in.points[i]);
+    out.original.push_back(i);
   }
-  // Where the ring closes, [begin, end) being the ring now, a tip may sit on either side.
-  std::size_t begin = first, end = pts.size();
-  while (end - begin >= 2) {
-    if (pts[end - 1] == pts[begin]) {
-      --end;
-    } else if (end - begin >= 3 && folds_back(pts[end - 2], pts[end - 1], pts[begin])) {
-      drop_tip(--end);
-    } else if (end - begin >= 3 && folds_back(pts[end - 1], pts[begin], pts[begin + 1])) {
-      drop_tip(begin++);
-    } else {
-      break;
+  while (out.points.size() > first + 1 && out.points.back() == out.points[first]) {
+    out.points.pop_back();
+    out.original.pop_back();
+  }
+}
+
+bool has_tip(const std::vector<Point>& pts, std::size_t first) {
+  const std::size_t n = pts.size() - first;
+  if (n < 3) return false;
+  for (std::size_t k = 0; k < n; ++k)
+    if (folds_back(pts[first + (k + n - 1) % n], pts[first + k], pts[first + (k + 1) % n]))
+      return true;
+  return false;
+}
+
+/// Dissolves the zero-width spikes and antennas of the ring [first, end) of `out` (no repeated
+/// consecutive points), in rounds: every tip of the ring as it is leaves at once (adjacent tips
+/// lie on one line, so the boundary as a chain of segments is unchanged, and so is the area),
+/// then points that come to follow their equal merge (the earlier stays), and the ring is looked
+/// at again where it changed, until no tip is left. Rounds, not one tip after another: which tip
+/// goes first could decide whether a point between them stays, and the validator must find the
+/// same vertices. Each tip is named in a warning, by round, in ring order.
+void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, const PolygonView& in,
+                     std::vector<Diagnostic>& diagnostics) {
+  const auto n = static_cast<std::uint32_t>(out.points.size() - first);
+  const auto at = [&](std::uint32_t k) -> const Point& { return out.points[first + k]; };
+  std::vector<std::uint32_t> prev(n), next(n), look(n), tips;
+  std::vector<std::uint8_t> alive(n, 1);
+  for (std::uint32_t k = 0; k < n; ++k)
+    prev[k] = (k + n - 1) % n, next[k] = (k + 1) % n, look[k] = k;
+  std::uint32_t left = n;
+  const auto drop = [&](std::uint32_t k) {
+    alive[k] = 0;
+    --left;
+    next[prev[k]] = next[k];
+    prev[next[k]] = prev[k];
+    look.insert(look.end(), {prev[k], next[k]});
+  };
+  while (left >= 3 && !look.empty()) {
+    std::sort(look.begin(), look.end());
+    look.erase(std::unique(look.begin(), look.end()), look.end());
+    tips.clear();
+    for (std::uint32_t k : look)
+      if (alive[k] && folds_back(at(prev[k]), at(k), at(next[k]))) tips.push_back(k);
+    look.clear();
+    for (std::uint32_t k : tips) {
+      diagnostics.push_back(
+          {Issue::spike_dissolved, ring, out.original[first + k] - in.ring_offsets[ring]});
+      drop(k);
+    }
+    for (std::size_t i = 0; i < look.size() && left >= 2; ++i) {
+      const std::uint32_t k = look[i];
+      if (alive[k] && at(next[k]) == at(k)) drop(std::max(k, next[k]));
     }
   }
-  const auto offset = [&](std::size_t k) { return static_cast<std::ptrdiff_t>(k); };
-  std::move(pts.begin() + offset(begin), pts.begin() + offset(end), pts.begin() + offset(first));
-  std::move(original.begin() + offset(begin), original.begin() + offset(end),
-            original.begin() + offset(first));
-  pts.resize(first + (end - begin));
-  original.resize(first + (end - begin));
+  std::uint32_t kept = 0;
+  for (std::uint32_t k = 0; k < n; ++k) {
+    if (!alive[k]) continue;
+    out.points[first + kept] = out.points[first + k];
+    out.original[first + kept++] = out.original[first + k];
+  }
+  out.points.resize(first + kept);
+  out.original.resize(first + kept);
 }
 
 bool fewer_than_3_points(const PolygonView& in, std::size_t ring) {
@@ -159,7 +186,8 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
   for (std::size_t r = 0; r < rings; ++r) {
     const std::size_t first = out.points.size();
     const std::size_t warnings = diagnostics.size();
-    append_ring(in, r, out, diagnostics);
+    append_deduplicated(in, r, out);
+    if (has_tip(out.points, first)) dissolve_spikes(out, first, r, in, diagnostics);
     const std::size_t count = out.points.size() - first;
     const int orientation = count >= 3 ? ring_orientation(&out.points[first], count) : 0;
     if (count < 3 || orientation == 0) {

@@ -1,6 +1,6 @@
-// One run of the pipeline: clean -> check -> bridge -> clip (sequential or a parallel
-// variant) -> CDT. The stages are functions of the algorithm folders; the engine owns their
-// buffers, so a reused engine allocates nothing once warm.
+// One run of the pipeline: clean -> check (-> split T-junctions) -> bridge -> clip (sequential or a
+// parallel variant) -> CDT. The stages are functions of the algorithm folders; the engine owns
+// their buffers, so a reused engine allocates nothing once warm.
 #pragma once
 
 #include <memory>

@@ -4,15 +4,20 @@
 // chain equal to the polygon's boundary chain (each boundary edge used once on its inner side,
 // every other edge zero times or once in each direction) makes the triangles a covering of the
 // plane whose degree at a point is the winding number of the polygon's boundary there: 1 inside,
-// 0 outside. The exact area equality then follows algebraically and is checked as an independent
-// guard on the edge bookkeeping. Areas are summed exactly (exact_sum.hpp), so the area check has
-// no tolerance: a valid triangulation has area_rel_error == 0 exactly.
+// 0 outside. The chains are compared as segments: a zero-width spike's two edges cancel (so
+// spikes are dissolved first), and where a vertex lies inside a boundary edge the triangles'
+// edges along its parts make up the same segment (residue.hpp checks what does not balance edge
+// by edge, line by line). The exact area equality then follows algebraically and is checked as
+// an independent guard on the edge bookkeeping. Areas are summed exactly (exact_sum.hpp), so the
+// area check has no tolerance: a valid triangulation has area_rel_error == 0 exactly.
 //
 // Triangle count: n + 2h - 2 counts angle sums (the boundary's turning), where n is the number of
 // kept vertices and h the kept holes. Where k kept vertices share one point (a hole touching the
 // outer ring or another hole at a vertex, a self-touching ring), the k boundary visits' angles
 // overlap by 2*pi*(k - 1) around that point, so each such extra index removes two triangles:
-// expected = n + 2h - 2 - 2m with m = n - (number of distinct kept points). Triangles whose
+// expected = n + 2h - 2 - 2m with m = n - (number of distinct kept points); a point inside a
+// boundary edge is one more boundary visit there (n and m one more). This is exact as long as
+// no ring visits a point twice: a ring's own visits need not have disjoint wedges. Triangles whose
 // vertices include one point twice ("collapsed", only with allow_zero_area) carry no area and no
 // boundary, so they are left out of the edge and count checks.
 #include <algorithm>
@@ -193,32 +198,40 @@ bool turns_back(const Point& a, const Point& b, const Point& c) {
   return !between(a.x, b.x, c.x) && !between(a.y, b.y, c.y);
 }
 
-// Zero-width spikes leave the ring: a vertex where it turns straight back (its two edges cancel
-// in the boundary chain) goes, and so does a repeated point that leaves, until neither is left.
-// A work list over a doubly linked ring: each removal looks again at the two neighbours only.
+// Zero-width spikes leave the ring in rounds: every vertex where the ring turns straight back
+// (its two edges cancel in the boundary chain) goes at once, then a point that comes to follow
+// an equal one goes, until no such vertex is left. Rounds, because the order of two adjacent
+// tips could decide whether a point between them stays (pear's cleaning does the same). Only
+// the neighbours of what left are looked at again.
 void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& kept) {
   const std::size_t k = kept.size();
-  std::vector<std::size_t> before(k), after(k), work(k);
+  std::vector<std::size_t> before(k), after(k), suspects(k), round;
   std::vector<std::uint8_t> gone(k, 0);
   for (std::size_t i = 0; i < k; ++i) {
-    before[i] = (i + k - 1) % k;
-    after[i] = (i + 1) % k;
-    work[i] = k - 1 - i;
+    before[i] = i == 0 ? k - 1 : i - 1;
+    after[i] = i + 1 == k ? 0 : i + 1;
+    suspects[i] = i;
   }
   std::size_t left = k;
   const auto at = [&](std::size_t i) -> const Point& { return points[kept[i]]; };
-  while (!work.empty() && left >= 3) {
-    const std::size_t i = work.back();
-    work.pop_back();
-    if (gone[i]) continue;
-    const std::size_t a = before[i], c = after[i];
-    if (!(at(a) == at(i)) && !turns_back(at(a), at(i), at(c))) continue;
+  const auto leave = [&](std::size_t i) {
     gone[i] = 1;
     --left;
-    after[a] = c;
-    before[c] = a;
-    work.push_back(c);
-    work.push_back(a);
+    after[before[i]] = after[i];
+    before[after[i]] = before[i];
+    suspects.push_back(before[i]);
+    suspects.push_back(after[i]);
+  };
+  while (left >= 3 && !suspects.empty()) {
+    round.clear();
+    for (std::size_t i : suspects)
+      if (!gone[i] && turns_back(at(before[i]), at(i), at(after[i]))) round.push_back(i);
+    std::sort(round.begin(), round.end());
+    round.erase(std::unique(round.begin(), round.end()), round.end());
+    suspects.clear();
+    for (std::size_t i : round) leave(i);
+    for (std::size_t s = 0; s < suspects.size() && left >= 2; ++s)
+      if (const std::size_t i = suspects[s]; !gone[i] && at(after[i]) == at(i)) leave(after[i]);
   }
   std::size_t w = 0;
   for (std::size_t i = 0; i < k; ++i)

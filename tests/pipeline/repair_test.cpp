@@ -181,13 +181,28 @@ TEST(Spike, AntennaDissolvesTipByTip) {
 }
 
 TEST(Spike, SpikeAtTheRingsSeamAndAPartialFold) {
-  // The ring starts on a spike's tip; the hole goes up past (1, 1.5) and back down to it.
+  // The ring starts on a spike's tip; the hole goes up to (1, 2), down to (1, 1.5) and up to
+  // (1, 3): both turning points are tips of the ring as it is, and leave in one round.
   const Polygon p = {{{2, 6}, {2, 4}, {0, 4}, {0, 0}, {4, 0}, {4, 4}, {2, 4}},
                      {{1, 1}, {1, 2}, {1, 1.5}, {1, 3}, {2, 2}}};
   const auto diagnostics = expect_ok_everywhere(p);
-  ASSERT_EQ(diagnostics.size(), 2u) << describe_all(diagnostics);
+  ASSERT_EQ(diagnostics.size(), 3u) << describe_all(diagnostics);
   expect_issue(diagnostics[0], Issue::spike_dissolved, 0, 0);
   expect_issue(diagnostics[1], Issue::spike_dissolved, 1, 1);
+  expect_issue(diagnostics[2], Issue::spike_dissolved, 1, 2);
+}
+
+TEST(Spike, AdjacentTipsLeaveTogether) {
+  // Found by fuzzing (degenerate, scaled by 2^-199): (13,0) and (0,0) are both tips of the
+  // ring, next to each other on one line. One after the other, the order decided whether
+  // (13,0) stayed as a straight vertex of the edge (14,0)-(4,0), and the validator (the other
+  // order) then wanted it used. In one round both go, whatever the order.
+  const Polygon p = {{{0, 0}, {13, 0}, {4, 0}, {2, 2}, {2, 4}, {4, 4}, {4, 2}, {14, 0}}};
+  const auto diagnostics = expect_ok_everywhere(p);
+  ASSERT_EQ(diagnostics.size(), 2u) << describe_all(diagnostics);
+  expect_issue(diagnostics[0], Issue::spike_dissolved, 0, 0);
+  expect_issue(diagnostics[1], Issue::spike_dissolved, 0, 1);
+  EXPECT_EQ(triangulate(p).triangles.size(), 4u);
 }
 
 TEST(Spike, HoleThatIsAllSpikeIsDroppedOnce) {
