@@ -116,6 +116,12 @@ struct Diagnostic {
   std::size_t ring = 0;
   std::size_t vertex = 0;
 
+  /// Whether it says the input is not a valid polygon here (Status::not_simple's reasons).
+  bool is_not_simple() const {
+    return issue == Issue::not_simple || issue == Issue::hole_outside_outer_ring ||
+           issue == Issue::hole_inside_hole;
+  }
+
   bool is_error() const {
     return issue == Issue::empty_input || issue == Issue::non_finite_coordinate ||
            issue == Issue::coordinate_out_of_range || issue == Issue::outer_ring_too_small ||

@@ -8,9 +8,11 @@
 // status. Post-conditions for Status::ok: result.triangles is a triangulation of the polygon
 // (outer ring minus holes) using only input vertices, numbered ring after ring in input order
 // (ring 0's first point is 0), counterclockwise, with n + 2h - 2 - 2m triangles where n counts the
-// vertices left after dropping repeated consecutive points and the closing point, h the holes
-// kept, and m the kept vertices that repeat an already used point (holes or rings touching at a
-// vertex). See README.md "Pre- and post-conditions" for the full contract.
+// vertices left after dropping repeated consecutive points, the closing point and zero-width
+// spikes, plus one for every vertex lying inside an edge (the edge is split there), h the holes
+// kept, and m the vertices that repeat an already used point (holes or rings touching at a
+// vertex, every split). Exact wherever no ring passes a point twice. See README.md
+// "Pre- and post-conditions" for the full contract.
 #pragma once
 
 #include <array>
@@ -50,9 +52,10 @@ enum class EarHeuristic : std::uint8_t {
 struct Options {
   Algorithm algorithm = Algorithm::automatic;
   EarHeuristic heuristic = EarHeuristic::top;
-  /// Check exactly, before clipping, that no two edges cross or overlap and that no vertex lies
-  /// inside another edge; a violation gives Status::not_simple and names the place. Without
-  /// the check, such input may come back as Status::ok with a triangulation that is not valid.
+  /// Check exactly, before clipping, that no two edges cross or overlap; a vertex lying inside
+  /// another edge splits that edge (Issue::t_junction_split, a warning), a crossing or overlap
+  /// gives Status::not_simple and names the place. Without the check no edge is split, and
+  /// such input may come back as Status::ok with a triangulation that is not valid.
   bool check_simplicity = true;
   /// Turn the triangulation into the constrained Delaunay triangulation of the polygon by exact
   /// edge flips (paper §2.4); in parallel when the algorithm is a parallel one.

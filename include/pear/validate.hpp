@@ -2,11 +2,14 @@
 //
 // Checks, together proving a valid triangulation (a degree-one covering of the polygon):
 //   indices in range, no repeated triangle, every triangle strictly counterclockwise by exact
-//   orient2d, every boundary edge of the cleaned input used by exactly one triangle on its inner
-//   side, every other edge by zero or two triangles with opposite orientation, the triangle count
-//   n + 2h - 2 - 2m (m: kept vertices minus distinct kept points, i.e. touching rings; only
-//   enforced when m = 0, since self-touching rings can differ and the other checks suffice), and
-//   the total triangle area equal to the polygon's area.
+//   orient2d, every boundary edge of the cleaned input (repeated points dropped, zero-width
+//   spikes dissolved) used by exactly one triangle on its inner side, or, where vertices lie
+//   inside it (T-junctions), its parts between them each so used (a triangle's edge is never
+//   split), every other edge by zero or two triangles with opposite orientation, the triangle
+//   count n + 2h - 2 - 2m (n counting each point inside a boundary edge once more; m: those
+//   and the kept vertices minus distinct kept points, i.e. touching rings; enforced wherever no
+//   ring passes a point twice, since self-touching rings can differ and the other checks
+//   suffice), and the total triangle area equal to the polygon's area.
 // Optionally: every non-boundary edge locally Delaunay by exact incircle (for a CDT).
 #pragma once
 
@@ -24,7 +27,7 @@ namespace pear {
 struct ValidateOptions {
   bool check_delaunay = false;    ///< also require every interior edge to be locally Delaunay
   bool allow_zero_area = false;   ///< accept zero-area triangles (degenerate input)
-  bool check_count = true;        ///< require n + 2h - 2 triangles (no Steiner points)
+  bool check_count = true;        ///< require n + 2h - 2 - 2m triangles (no Steiner points)
   std::size_t max_messages = 20;  ///< stop recording messages after this many
 };
 

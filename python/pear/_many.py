@@ -100,7 +100,7 @@ class BatchResult:
             return self
         p = int(bad[0])
         diagnostics = self.diagnostics(p)
-        first = next((d for d in diagnostics if d.is_error or d.issue == "not_simple"), None)
+        first = next((d for d in diagnostics if d.is_error or d.is_not_simple), None)
         message = f"polygon {p}: {first if first is not None else Status(self.status[p]).name}"
         from ._types import InvalidInputError, NotSimpleError
         if self.status[p] == Status.not_simple:

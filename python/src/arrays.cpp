@@ -176,7 +176,7 @@ void raise_for_status(Status status, std::span<const Diagnostic> diagnostics, py
                       const std::string& where) {
   const Diagnostic* first = diagnostics.empty() ? nullptr : &diagnostics.front();
   for (const Diagnostic& d : diagnostics)
-    if (d.is_error() || (status == Status::not_simple && d.issue == Issue::not_simple)) {
+    if (d.is_error() || (status == Status::not_simple && d.is_not_simple())) {
       first = &d;
       break;
     }

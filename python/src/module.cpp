@@ -249,6 +249,7 @@ void bind_diagnostic(py::module_& m) {
       .def_readonly("ring", &Diagnostic::ring)
       .def_readonly("vertex", &Diagnostic::vertex)
       .def_property_readonly("is_error", &Diagnostic::is_error)
+      .def_property_readonly("is_not_simple", &Diagnostic::is_not_simple)
       .def("__str__", [](const Diagnostic& d) { return describe(d); })
       .def("__repr__",
            [](const Diagnostic& d) {

@@ -132,6 +132,21 @@ def test_not_simple_raises_with_the_best_effort_triangles():
     assert status is pear.Status.not_simple and np.array_equal(triangles, error.triangles)
 
 
+def test_not_simple_names_a_misplaced_hole_not_an_earlier_warning():
+    # Hole 1 is dropped (two points: a warning); hole 2 lies outside the outer ring.
+    coords = [[0, 0], [10, 0], [10, 10], [0, 10], [1, 1], [2, 2], [20, 2], [20, 4], [22, 4]]
+    with pytest.raises(pear.NotSimpleError) as caught:
+        pear.triangulate(np.asarray(coords, dtype=float), [4, 6])
+    error = caught.value
+    assert [d.issue for d in error.diagnostics] == ["hole_dropped_too_small",
+                                                    "hole_outside_outer_ring"]
+    assert [d.is_not_simple for d in error.diagnostics] == [False, True]
+    assert "ring 2, vertex 0: hole lies outside the outer ring" in str(error)
+    many = pear.triangulate_many(np.asarray(coords, dtype=float), [0, 4, 6, 9], [0, 3])
+    with pytest.raises(pear.NotSimpleError, match="hole lies outside the outer ring"):
+        many.check()
+
+
 def test_strict_false_returns_ok_with_the_triangles():
     triangles, status = pear.triangulate(SQUARE_WITH_HOLE, [4], strict=False)
     assert status is pear.Status.ok and len(triangles) == 8

@@ -16,7 +16,7 @@ int half(const Point& centre, const Point& to) {
 
 }  // namespace
 
-void TouchingPoints::untangle(Boundary& b) {
+std::uint32_t TouchingPoints::untangle(Boundary& b) {
   // Most boundaries visit only a few points more than once (bridge ends, touching rings), so
   // only the nodes whose position hashes to a slot another node shares are looked at again.
   const std::size_t table_bits = std::bit_width(std::max<std::size_t>(4 * b.size(), 2) - 1);
@@ -67,6 +67,7 @@ void TouchingPoints::untangle(Boundary& b) {
     }
   }
   shared_.assign(b.size(), 0);
+  std::uint32_t overlapping = UINT32_MAX;
   for (const std::uint32_t head : heads_) {
     if (same_[head] == UINT32_MAX) continue;
     group_.clear();
@@ -75,16 +76,18 @@ void TouchingPoints::untangle(Boundary& b) {
       shared_[order_[k]] = 1;
     }
     std::sort(group_.begin(), group_.end());
-    untangle_point(b, group_.data(), group_.size());
+    if (!untangle_point(b, group_.data(), group_.size()) && overlapping == UINT32_MAX)
+      overlapping = group_[0];
   }
+  return overlapping;
 }
 
-void TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count) {
+bool TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count) {
   const Point centre = b.pos[nodes[0]];
   spokes_.clear();
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t u = nodes[i];
-    if (b.pos[b.prev[u]] == centre || b.pos[b.next[u]] == centre) return;
+    if (b.pos[b.prev[u]] == centre || b.pos[b.next[u]] == centre) return true;
     spokes_.push_back({b.pos[b.prev[u]], u, false});
     spokes_.push_back({b.pos[b.next[u]], u, true});
   }
@@ -105,13 +108,14 @@ void TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std
   };
   std::sort(spokes_.begin(), spokes_.end(), order);
   const std::size_t n = spokes_.size();
+  for (std::size_t i = 0; i < n; ++i)  // not alternating: not a weakly simple crossing point
+    if (spokes_[i].out == spokes_[(i + 1) % n].out) return false;
   for (std::size_t i = 0; i < n; ++i) {
     const Spoke &s = spokes_[i], &t = spokes_[(i + 1) % n];
-    if (s.out == t.out) return;  // not alternating: not a weakly simple crossing point
     const bool along = !before(s, t) && !before(t, s);
     // Two spokes along one direction are a bridge (in, out) or a spike tip; more overlap.
     const Spoke& u = spokes_[(i + 2) % n];
-    if (along && (s.out != (s.node == t.node) || (!before(t, u) && !before(u, t)))) return;
+    if (along && (s.out != (s.node == t.node) || (!before(t, u) && !before(u, t)))) return true;
   }
   // A pass enters along an in-spoke and leaves along the out-spoke just before it
   // counterclockwise: its interior wedge, from the out-spoke round to the in-spoke, is empty.
@@ -123,6 +127,7 @@ void TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std
     successor_.push_back(b.next[leaving]);
   }
   for (std::size_t i = 0; i < successor_.size(); i += 2) b.link(successor_[i], successor_[i + 1]);
+  return true;
 }
 
 std::vector<std::uint32_t> TouchingPoints::cycles(const Boundary& b, std::uint32_t first,

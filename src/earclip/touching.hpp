@@ -16,8 +16,11 @@ namespace pear::detail {
 class TouchingPoints {
  public:
   /// Relinks the passes at every point that several nodes share. Exact; leaves a point alone
-  /// when two of its edges overlap or its edges do not alternate in and out.
-  void untangle(Boundary& b);
+  /// when two of its edges overlap or its edges do not alternate in and out. Returns the first
+  /// node (by index) of the first point (in node order) whose edges do not alternate: two
+  /// passes' interior wedges overlap there, so the boundary is not weakly simple (a lobe inside
+  /// a lobe of the same ring, a hole outside its ring touching it); UINT32_MAX when none.
+  std::uint32_t untangle(Boundary& b);
   /// After untangle: 1 for every node whose position another node has (bridge ends, touching
   /// rings), what the clipper calls pinches; it need not hash the positions again.
   const std::vector<std::uint8_t>& shared_positions() const { return shared_; }
@@ -33,7 +36,8 @@ class TouchingPoints {
     std::uint32_t node;
     bool out;
   };
-  void untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
+  /// False when the point's edges do not alternate in and out.
+  bool untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
 
   std::vector<std::uint64_t> seen_once_, seen_twice_;  ///< per hash slot: nodes there
   std::vector<std::uint32_t> order_;        ///< nodes whose hash slot another node shares

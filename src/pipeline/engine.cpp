@@ -70,16 +70,16 @@ std::optional<std::uint32_t> Engine::split_t_junctions(const PolygonView& input,
   return simplicity_.find_violation(clean_, ctx);
 }
 
-Diagnostic Engine::why_not_clipped(const PolygonView& input, bool checked,
-                                   std::uint32_t best_effort_vertex) const {
+Diagnostic Engine::why_not_valid(const PolygonView& input, bool checked,
+                                 std::uint32_t vertex) const {
   // The check found no conflict, so the rings meet only at shared vertices: a hole in the wrong
-  // place is the one reason left that the input has (named exactly). Else the engine stopped.
+  // place is named exactly; else the boundary overlaps itself at a point, or the engine stopped.
   if (checked)
     if (const auto hole = find_misplaced_hole(clean_))
       return locate(input,
                     hole->outside_outer ? Issue::hole_outside_outer_ring : Issue::hole_inside_hole,
                     clean_.original[hole->vertex]);
-  return locate(input, Issue::not_simple, best_effort_vertex);
+  return locate(input, Issue::not_simple, vertex);
 }
 
 bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
@@ -94,6 +94,7 @@ bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunC
     }
   }
   std::vector<std::uint32_t> unjoined;
+  std::uint32_t overlapping = UINT32_MAX;
   ctx.run_serial("bridge holes", [&] {
     boundary_.clear();
     for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
@@ -104,12 +105,18 @@ bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunC
       boundary_.link(last, first);
     }
     unjoined = bridger_.join(clean_, boundary_);
-    touching_.untangle(boundary_);
+    overlapping = touching_.untangle(boundary_);
     cycles_ = touching_.cycles(boundary_, 0, unjoined);
   });
   // Nothing lies to the left of the hole's leftmost vertex: it is outside the outer ring.
   for (std::uint32_t hole : unjoined) {
     diagnostics.push_back(locate(input, Issue::hole_outside_outer_ring, boundary_.vertex[hole]));
+    status = Status::not_simple;
+  }
+  // Edges that meet only where they end may still bound overlapping wedges at a point the
+  // boundary passes twice (a lobe inside a lobe of the same orientation): not a polygon.
+  if (check_simplicity && status == Status::ok && overlapping != UINT32_MAX) {
+    diagnostics.push_back(why_not_valid(input, true, boundary_.vertex[overlapping]));
     status = Status::not_simple;
   }
   return true;
@@ -203,7 +210,7 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
   const Algorithm algorithm = resolve(options.algorithm, boundary_.size(), ctx.partitions);
   std::uint32_t best_effort_vertex = 0;
   if (!clip(algorithm, options, ctx, out, best_effort_vertex) && status == Status::ok) {
-    diagnostics.push_back(why_not_clipped(input, options.check_simplicity, best_effort_vertex));
+    diagnostics.push_back(why_not_valid(input, options.check_simplicity, best_effort_vertex));
     status = Status::not_simple;
   }
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.

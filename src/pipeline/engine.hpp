@@ -68,9 +68,10 @@ class Engine {
   std::optional<std::uint32_t> split_t_junctions(const PolygonView& input, const RunContext& ctx,
                                                  std::uint32_t violation,
                                                  std::vector<Diagnostic>& diagnostics);
-  /// Why clipping stopped short on a polygon whose check (when `checked`) found nothing.
-  Diagnostic why_not_clipped(const PolygonView& input, bool checked,
-                             std::uint32_t best_effort_vertex) const;
+  /// Why a polygon whose check (when `checked`) found no conflict is not valid after all: a
+  /// misplaced hole if there is one, else not_simple at `vertex` (where the boundary overlaps
+  /// itself, or where clipping stopped short).
+  Diagnostic why_not_valid(const PolygonView& input, bool checked, std::uint32_t vertex) const;
   Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
   FlatPolygon input_;

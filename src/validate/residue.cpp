@@ -6,6 +6,7 @@
 #include "residue.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <numeric>
 #include <utility>
 
@@ -73,21 +74,27 @@ void check_run(std::span<const Point> points, std::span<const Residue> residues,
                                                      }) -
                                     line.begin());
   };
-  std::vector<long long> change(line.size() + 1, 0);
+  // Per stretch between consecutive points: the signed coverage (must be 0) and how many
+  // boundary edges cover it (at most 1: boundary edges that overlap, a slit of zero width or
+  // worse, are not made valid by triangles that fill it).
+  std::vector<long long> change(line.size() + 1, 0), boundary(line.size() + 1, 0);
   bool conforming = true;
   for (std::uint32_t r : run) {
     const Residue& e = residues[r];
     const std::size_t from = place(e.lo), to = place(e.hi);
+    const std::size_t low = std::min(from, to), high = std::max(from, to);
     const long long uses = e.triangle_uses - e.boundary_uses;
-    change[std::min(from, to)] += from < to ? uses : -uses;
-    change[std::max(from, to)] -= from < to ? uses : -uses;
-    const std::size_t span = from < to ? to - from : from - to;
-    if (e.triangle_uses != 0 && span != 1) conforming = false;
+    change[low] += from < to ? uses : -uses;
+    change[high] -= from < to ? uses : -uses;
+    boundary[low] += std::abs(e.boundary_uses);
+    boundary[high] -= std::abs(e.boundary_uses);
+    if (e.triangle_uses != 0 && high - low != 1) conforming = false;
   }
-  long long coverage = 0;
-  for (long long c : change) {
-    coverage += c;
-    if (coverage != 0) return;
+  long long coverage = 0, boundary_edges = 0;
+  for (std::size_t k = 0; k < change.size(); ++k) {
+    coverage += change[k];
+    boundary_edges += boundary[k];
+    if (coverage != 0 || boundary_edges > 1) return;
   }
   if (!conforming) return;
   for (std::uint32_t r : run) {

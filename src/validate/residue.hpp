@@ -34,7 +34,8 @@ struct ResidueBalance {
 
 /// Groups the residues into runs of collinear edges joined at their ends, and checks each run
 /// exactly: along its line, the triangles' uses minus the boundary's sum to zero between any
-/// two consecutive points, and no point of the run lies inside a triangle's edge.
+/// two consecutive points, no two boundary edges cover the same stretch (overlapping boundary
+/// edges are no polygon), and no point of the run lies inside a triangle's edge.
 ResidueBalance balance_residue(std::span<const Point> points, std::span<const Residue> residues);
 
 }  // namespace pear::detail

@@ -26,9 +26,10 @@ std::string describe_all(const std::vector<Diagnostic>& diagnostics) {
   return all;
 }
 
-/// Status ok and a valid triangulation (the count the validator expects, Delaunay with the CDT)
-/// with every algorithm, 1 and 2 threads, with and without the CDT; the same triangles at 1
-/// and 2 threads. Returns the sequential result's diagnostics.
+/// Status ok and a valid triangulation (Delaunay with the CDT; the validator checks the count
+/// wherever no ring passes a point twice) with every algorithm, 1 and 2 threads, with and
+/// without the CDT; the same triangles at 1 and 2 threads. Returns the sequential result's
+/// diagnostics.
 std::vector<Diagnostic> expect_ok_everywhere(const Polygon& polygon, unsigned partitions = 2) {
   std::vector<Diagnostic> diagnostics;
   for (Algorithm algorithm : algorithms) {
@@ -46,7 +47,6 @@ std::vector<Diagnostic> expect_ok_everywhere(const Polygon& polygon, unsigned pa
         const auto report =
             validate(polygon, result.triangles, ValidateOptions{.check_delaunay = delaunay});
         EXPECT_TRUE(report.valid) << (report.messages.empty() ? "" : report.messages.front());
-        EXPECT_EQ(report.triangles, report.expected_triangles);
         EXPECT_EQ(report.area_rel_error, 0);
         if (threads == 1)
           first = result.triangles;
@@ -250,6 +250,40 @@ TEST(Refused, CrossingIsNamedNotTheTJunctionBeforeIt) {
   EXPECT_EQ(status_of(p, issue, ring), Status::not_simple);
   EXPECT_EQ(issue, Issue::not_simple);
   EXPECT_TRUE(ring == 2 || ring == 3) << ring;
+}
+
+TEST(Refused, LobeInsideALobeOfTheSameOrientationIsNotSimple) {
+  // The ring passes (0,0) twice and its second lobe lies inside the first, both
+  // counterclockwise: covered twice there. No edges cross, so only the wedges at (0,0) tell
+  // (they overlap). Turned the other way round the inner lobe is a hole the ring makes: valid.
+  const Polygon nested = {{{0, 0}, {4, 0}, {4, 4}, {0, 0}, {3, 1}, {3, 2}}};
+  Issue issue;
+  std::size_t ring = 9;
+  EXPECT_EQ(status_of(nested, issue, ring), Status::not_simple);
+  EXPECT_EQ(issue, Issue::not_simple);
+  expect_ok_everywhere({{{0, 0}, {4, 0}, {4, 4}, {0, 0}, {3, 2}, {3, 1}}});
+}
+
+TEST(Refused, SplitsThatLeaveOverlappingLobesAreNotSimple) {
+  // Found by fuzzing (degenerate): spikes dissolve, (4,4) and (5,2) lie inside edges of the
+  // ring itself, and the lobes the splits leave overlap near (0,0): it came back ok with
+  // overlapping triangles.
+  const Polygon p = {{{6, 0},
+                      {0, 0},
+                      {6, 7},
+                      {4, 4},
+                      {6, 0},
+                      {0, 0},
+                      {7, 7},
+                      {0, 1},
+                      {7, 7},
+                      {0, 1},
+                      {7, 7},
+                      {5, 2}}};
+  Issue issue;
+  std::size_t ring = 9;
+  EXPECT_EQ(status_of(p, issue, ring), Status::not_simple);
+  EXPECT_EQ(issue, Issue::not_simple);
 }
 
 TEST(Refused, HoleOutsideTheOuterRingIsNamed) {

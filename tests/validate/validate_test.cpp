@@ -165,6 +165,17 @@ TEST(Validate, RejectsTriangulationMissingTheSplit) {
   EXPECT_GT(report.bad_edges, 0u);
 }
 
+TEST(Validate, RejectsATriangulationThatFillsAnOverlapOfTheBoundary) {
+  // The hole's base (3,0)-(1,0) runs along the outer edge 0 -> 1 the other way: the boundary
+  // cancels there as a chain, and the five triangles cover the notched square exactly, but
+  // boundary edges that overlap are no polygon (pear calls it not_simple).
+  const Polygon notch = {{{0, 0}, {4, 0}, {4, 4}, {0, 4}}, {{1, 0}, {3, 0}, {2, 2}}};
+  const auto report = check(notch, {{0, 4, 6}, {0, 6, 3}, {6, 2, 3}, {6, 5, 1}, {6, 1, 2}});
+  EXPECT_FALSE(report.valid);
+  EXPECT_EQ(report.area_rel_error, 0);
+  EXPECT_TRUE(has_message(report, "is not used by any triangle")) << messages(report);
+}
+
 TEST(Validate, RejectsTriangleEdgeThroughABoundaryVertex) {
   // Vertex 1 = (2,0) lies on the triangles' edge 0 -> 2: only the boundary's edges may be split.
   const Polygon polygon = {{{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}};

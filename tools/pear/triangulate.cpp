@@ -133,12 +133,8 @@ struct PolygonResult {
 /// The diagnostic that says why the status is not ok (warnings about what was repaired, such as
 /// a dropped hole, may come before it); the first when none matches.
 const Diagnostic* explaining(Status status, std::span<const Diagnostic> diagnostics) {
-  for (const Diagnostic& d : diagnostics) {
-    const bool placement =
-        d.issue == Issue::hole_outside_outer_ring || d.issue == Issue::hole_inside_hole;
-    if (status == Status::not_simple ? d.issue == Issue::not_simple || placement : d.is_error())
-      return &d;
-  }
+  for (const Diagnostic& d : diagnostics)
+    if (status == Status::not_simple ? d.is_not_simple() : d.is_error()) return &d;
   return diagnostics.empty() ? nullptr : &diagnostics.front();
 }
 
