@@ -6,7 +6,7 @@
 // plane whose degree at a point is the winding number of the polygon's boundary there: 1 inside,
 // 0 outside. The chains are compared as segments: a zero-width spike's two edges cancel (so
 // spikes are dissolved first), and where a vertex lies inside a boundary edge the triangles'
-// edges along its parts make up the same segment (residue.hpp checks what does not balance edge
+// edges along its parts make up the same segment (repairs.hpp checks what does not balance edge
 // by edge, line by line). The exact area equality then follows algebraically and is checked as
 // an independent guard on the edge bookkeeping. Areas are summed exactly (exact_sum.hpp), so the
 // area check has no tolerance: a valid triangulation has area_rel_error == 0 exactly.
@@ -36,7 +36,7 @@
 #include "exact_sum.hpp"
 #include "pear/predicates.hpp"
 #include "pear/validate.hpp"
-#include "residue.hpp"
+#include "repairs.hpp"
 
 namespace pear {
 namespace {
@@ -188,57 +188,6 @@ bool Validator::check_coordinates() {
   return ok;
 }
 
-// Whether a ring going a -> b -> c turns straight back at b: collinear, and b not strictly
-// between a and c. Distinct points on a line differ in x unless the line is vertical.
-bool turns_back(const Point& a, const Point& b, const Point& c) {
-  if (orient2d(a, b, c) != 0) return false;
-  const auto between = [](double p, double q, double r) {
-    return (p < q && q < r) || (r < q && q < p);
-  };
-  return !between(a.x, b.x, c.x) && !between(a.y, b.y, c.y);
-}
-
-// Zero-width spikes leave the ring in rounds: every vertex where the ring turns straight back
-// (its two edges cancel in the boundary chain) goes at once, then a point that comes to follow
-// an equal one goes, until no such vertex is left. Rounds, because the order of two adjacent
-// tips could decide whether a point between them stays (pear's cleaning does the same). Only
-// the neighbours of what left are looked at again.
-void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& kept) {
-  const std::size_t k = kept.size();
-  std::vector<std::size_t> before(k), after(k), suspects(k), round;
-  std::vector<std::uint8_t> gone(k, 0);
-  for (std::size_t i = 0; i < k; ++i) {
-    before[i] = i == 0 ? k - 1 : i - 1;
-    after[i] = i + 1 == k ? 0 : i + 1;
-    suspects[i] = i;
-  }
-  std::size_t left = k;
-  const auto at = [&](std::size_t i) -> const Point& { return points[kept[i]]; };
-  const auto leave = [&](std::size_t i) {
-    gone[i] = 1;
-    --left;
-    after[before[i]] = after[i];
-    before[after[i]] = before[i];
-    suspects.push_back(before[i]);
-    suspects.push_back(after[i]);
-  };
-  while (left >= 3 && !suspects.empty()) {
-    round.clear();
-    for (std::size_t i : suspects)
-      if (!gone[i] && turns_back(at(before[i]), at(i), at(after[i]))) round.push_back(i);
-    std::sort(round.begin(), round.end());
-    round.erase(std::unique(round.begin(), round.end()), round.end());
-    suspects.clear();
-    for (std::size_t i : round) leave(i);
-    for (std::size_t s = 0; s < suspects.size() && left >= 2; ++s)
-      if (const std::size_t i = suspects[s]; !gone[i] && at(after[i]) == at(i)) leave(after[i]);
-  }
-  std::size_t w = 0;
-  for (std::size_t i = 0; i < k; ++i)
-    if (!gone[i]) kept[w++] = kept[i];
-  kept.resize(w);
-}
-
 // The cleaned ring's vertices: repeated consecutive points and closing points dropped (the kept
 // vertex keeps the index of its first occurrence), then zero-width spikes dissolved.
 void Validator::keep_ring(std::size_t ring, std::vector<std::uint32_t>& kept) {
@@ -247,7 +196,7 @@ void Validator::keep_ring(std::size_t ring, std::vector<std::uint32_t>& kept) {
   for (std::uint32_t i = polygon_.ring_offsets[ring]; i < polygon_.ring_offsets[ring + 1]; ++i)
     if (kept.empty() || !(points[i] == points[kept.back()])) kept.push_back(i);
   while (kept.size() > 1 && points[kept.back()] == points[kept.front()]) kept.pop_back();
-  if (kept.size() >= 3) dissolve_tips(points, kept);
+  if (kept.size() >= 3) detail::dissolve_tips(points, kept);
 }
 
 bool Validator::clean_rings() {

@@ -1,9 +1,13 @@
-// The validator's answer to T-junctions. Where a vertex lies inside a boundary edge (a hole
-// touching the outer ring inside one of its edges), a valid triangulation uses the edge's parts,
-// not the edge: the edge uses do not balance one by one. What is left over (the residue: the
-// triangles' boundary chain minus the polygon's, edge by edge) must then cancel as segments,
-// line by line, the boundary's edges split only at points lying inside them, the triangles'
-// edges never (no vertex may lie inside a triangle's edge). Independent of pear's engine.
+// The validator's own reading of the repairs the README promises, independent of pear's engine.
+//
+// Zero-width spikes: the ring's vertices where it turns straight back leave before counting.
+//
+// T-junctions: where a vertex lies inside a boundary edge (a hole touching the outer ring inside
+// one of its edges), a valid triangulation uses the edge's parts, not the edge: the edge uses
+// do not balance one by one. What is left over (the residue: the triangles' boundary chain minus
+// the polygon's, edge by edge) must then cancel as segments, line by line, the boundary's edges
+// split only at points lying inside them, the triangles' edges never (no vertex may lie inside
+// a triangle's edge).
 #pragma once
 
 #include <cstdint>
@@ -13,6 +17,11 @@
 #include "pear/geometry.hpp"
 
 namespace pear::detail {
+
+/// Removes from the ring `kept` (indices into points, no repeated consecutive points, at least
+/// 3) its zero-width spikes, in rounds: every vertex where the ring turns straight back leaves
+/// at once, then repeated points merge, until no such vertex is left (README).
+void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& kept);
 
 /// An edge whose uses do not balance, between two distinct points (canonical indices).
 struct Residue {

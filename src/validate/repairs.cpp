@@ -1,9 +1,10 @@
-// Why cancelling line by line is the right test: two chains of segments are equal as point sets
-// with multiplicity (the covering argument of validate.cpp needs no more) exactly when, on every
-// line, the signed coverage of each point of the line is the same. Residue edges that are
-// collinear and share an end form a run; runs on one line share no point, and a run's coverage
-// changes only at its own points, so two runs can only cancel each other if each cancels alone.
-#include "residue.hpp"
+// The validator's repairs (repairs.hpp). Why cancelling T-junction residues line by line is
+// the right test: two chains of segments are equal as point sets with multiplicity (the
+// covering argument of validate.cpp needs no more) exactly when, on every line, the signed
+// coverage of each point of the line is the same. Residue edges that are collinear and share
+// an end form a run; runs on one line share no point, and a run's coverage changes only at its
+// own points, so two runs can only cancel each other if each cancels alone.
+#include "repairs.hpp"
 
 #include <algorithm>
 #include <cstdlib>
@@ -14,6 +15,16 @@
 
 namespace pear::detail {
 namespace {
+
+// Whether a ring going a -> b -> c turns straight back at b: collinear, and b not strictly
+// between a and c. Distinct points on a line differ in x unless the line is vertical.
+bool turns_back(const Point& a, const Point& b, const Point& c) {
+  if (orient2d(a, b, c) != 0) return false;
+  const auto between = [](double p, double q, double r) {
+    return (p < q && q < r) || (r < q && q < p);
+  };
+  return !between(a.x, b.x, c.x) && !between(a.y, b.y, c.y);
+}
 
 bool lexicographic_less(const Point& a, const Point& b) {
   return a.x < b.x || (a.x == b.x && a.y < b.y);
@@ -107,6 +118,47 @@ void check_run(std::span<const Point> points, std::span<const Residue> residues,
 }
 
 }  // namespace
+
+// Zero-width spikes leave the ring in rounds: every vertex where the ring turns straight back
+// (its two edges cancel in the boundary chain) goes at once, then a point that comes to follow
+// an equal one goes, until no such vertex is left. Rounds, because the order of two adjacent
+// tips could decide whether a point between them stays (pear's cleaning does the same). Only
+// the neighbours of what left are looked at again.
+void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& kept) {
+  const std::size_t k = kept.size();
+  std::vector<std::size_t> before(k), after(k), suspects(k), round;
+  std::vector<std::uint8_t> gone(k, 0);
+  for (std::size_t i = 0; i < k; ++i) {
+    before[i] = i == 0 ? k - 1 : i - 1;
+    after[i] = i + 1 == k ? 0 : i + 1;
+    suspects[i] = i;
+  }
+  std::size_t left = k;
+  const auto at = [&](std::size_t i) -> const Point& { return points[kept[i]]; };
+  const auto leave = [&](std::size_t i) {
+    gone[i] = 1;
+    --left;
+    after[before[i]] = after[i];
+    before[after[i]] = before[i];
+    suspects.push_back(before[i]);
+    suspects.push_back(after[i]);
+  };
+  while (left >= 3 && !suspects.empty()) {
+    round.clear();
+    for (std::size_t i : suspects)
+      if (!gone[i] && turns_back(at(before[i]), at(i), at(after[i]))) round.push_back(i);
+    std::sort(round.begin(), round.end());
+    round.erase(std::unique(round.begin(), round.end()), round.end());
+    suspects.clear();
+    for (std::size_t i : round) leave(i);
+    for (std::size_t s = 0; s < suspects.size() && left >= 2; ++s)
+      if (const std::size_t i = suspects[s]; !gone[i] && at(after[i]) == at(i)) leave(after[i]);
+  }
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < k; ++i)
+    if (!gone[i]) kept[w++] = kept[i];
+  kept.resize(w);
+}
 
 ResidueBalance balance_residue(std::span<const Point> points, std::span<const Residue> residues) {
   const auto count = static_cast<std::uint32_t>(residues.size());
