@@ -9,6 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "corpus.hpp"
+#include "missing_data.hpp"
+#include "pear/io.hpp"
 #include "pear/pear.hpp"
 #include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
@@ -226,6 +229,17 @@ Status status_of(const Polygon& p, Issue& issue, std::size_t& ring) {
   const auto report = validate(p, result.triangles);
   EXPECT_TRUE(result.status != Status::ok || report.valid);
   return result.status;
+}
+
+// Issue 19 listed earcut's water-huge3 (12,864 vertices, 1,443 holes, valid) as still ending in
+// the best effort; f2da6c4 (touching points relinked where bridges end) had fixed it, and
+// nothing since may undo that.
+TEST(Corpus, WaterHuge3IsOkOnEveryAlgorithm) {
+  const corpus::fs::path path = corpus::bundled_root() / "earcut" / "water-huge3.json";
+  if (!corpus::fs::exists(path)) GTEST_SKIP() << testing::missing_data << path.string();
+  const std::vector<Polygon> polygons = io::read_file(path.string());
+  ASSERT_EQ(polygons.size(), 1u);
+  expect_ok_everywhere(polygons[0]);
 }
 
 TEST(Refused, OverlapAlongASegmentStaysNotSimple) {
