@@ -35,7 +35,7 @@ class Executor;  // pear/scheduler.hpp
 /// Which triangulation algorithm to run. Every algorithm gives a valid triangulation of the same
 /// polygon; they differ in speed, in the triangles' shapes, and in how they use threads.
 enum class Algorithm : std::uint8_t {
-  automatic,           ///< pear picks by size and thread count (see README "Which algorithm")
+  automatic,           ///< pear picks by size and partitions (see README "Which algorithm")
   sequential,          ///< the sequential FIST-style ear clipper
   partition_and_cut,   ///< paper §2.2: k chains clipped in parallel, each with its own queue
   mark_and_cut,        ///< paper §2.3: rounds of clipping every second ear in parallel

@@ -18,11 +18,14 @@ constexpr std::size_t parallel_threshold = 20'000;
 constexpr std::size_t small_limit = 128;
 
 /// `automatic` depends on the size and the partitions, never on the threads: the output does not
-/// change with the machine.
+/// change with the machine. With two partitions divide-and-conquer's one split line halves the
+/// work and keeps `top`'s quality: it measured fastest at 2 threads on every family and was never
+/// slower than sequential. With more, its recursion costs work on stars and combs while
+/// partition-and-cut's chains keep scaling (docs/parallel.md, "What automatic picks").
 Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions) {
   if (requested != Algorithm::automatic) return requested;
-  return partitions > 1 && nodes >= parallel_threshold ? Algorithm::partition_and_cut
-                                                       : Algorithm::sequential;
+  if (partitions < 2 || nodes < parallel_threshold) return Algorithm::sequential;
+  return partitions == 2 ? Algorithm::divide_and_conquer : Algorithm::partition_and_cut;
 }
 
 bool sequential(Algorithm algorithm) {

@@ -66,12 +66,20 @@ TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
       }
     }
   }
-  // And automatic with 4 partitions is partition-and-cut on such a polygon, at any thread count.
+  // And automatic on such a polygon is, at any thread count: divide-and-conquer with 2
+  // partitions, partition-and-cut with 4, the sequential engine with 1 (docs/parallel.md).
   const Polygon koch = generate_polygon("koch", 40000, 3);
-  EXPECT_EQ(
-      triangulate(koch, {.threads = 1, .partitions = 4}).triangles,
-      triangulate(koch, {.algorithm = Algorithm::partition_and_cut, .threads = 2, .partitions = 4})
-          .triangles);
+  const auto same = [&](unsigned partitions, Algorithm algorithm) {
+    const auto chosen = triangulate(koch, {.threads = 1, .partitions = partitions});
+    const auto named =
+        triangulate(koch, {.algorithm = algorithm, .threads = 2, .partitions = partitions});
+    return chosen.triangles == named.triangles;
+  };
+  EXPECT_TRUE(same(1, Algorithm::sequential));
+  EXPECT_TRUE(same(2, Algorithm::divide_and_conquer));
+  EXPECT_FALSE(same(2, Algorithm::partition_and_cut));
+  EXPECT_TRUE(same(4, Algorithm::partition_and_cut));
+  EXPECT_FALSE(same(4, Algorithm::divide_and_conquer));
 }
 
 }  // namespace

@@ -55,7 +55,8 @@ void Args::unknown() const {
 namespace {
 // The one table of algorithm names.
 constexpr AlgorithmName names[] = {
-    {"auto", Algorithm::automatic, "sequential for small polygons, else partition-and-cut"},
+    {"auto", Algorithm::automatic,
+     "small: sequential; 2 parts: divide-and-conquer; more: partition-and-cut"},
     {"sequential", Algorithm::sequential, "FIST-style ear clipping on one thread"},
     {"partition-and-cut", Algorithm::partition_and_cut,
      "parallel: chains between landmarks, each clipped by its own task"},
