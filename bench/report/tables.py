@@ -21,15 +21,24 @@ def fmt_ratio(r):
     return "" if r is None else f"**{r:.2f}x**" if r >= 1 else f"{r:.2f}x"
 
 
+#: The default options first (`top`, `automatic`), then pear's best setting of each kind.
+KEYS = ("default, 1 thread", "default, 2 threads", "sequential", "2 threads", "CDT sequential",
+        "CDT 2 threads")
+
+
 def comparisons(t, inp):
-    """The four comparisons of one input: (pear name, pear ms, peer name, peer ms) each."""
+    """The comparisons of one input (KEYS): (pear name, pear ms, peer name, peer ms) each."""
     peer, peer_ms = t.best(inp, PEERS)
     cdt_peer, cdt_peer_ms = t.best(inp, CDT_PEERS)
+    top, top_ms = t.best(inp, ["pear_top"])
+    auto, auto_ms = t.best(inp, ["pear_auto_t2"])
     seq, seq_ms = t.best(inp, SEQUENTIAL)
     par, par_ms = t.best(inp, t.parallel(2))
     cdt, cdt_ms = t.best(inp, ["pear_cdt"])
     pcdt, pcdt_ms = t.best(inp, t.parallel(2, cdt=True))
     return {
+        "default, 1 thread": (top, top_ms, peer, peer_ms),
+        "default, 2 threads": (auto, auto_ms, peer, peer_ms),
         "sequential": (seq, seq_ms, peer, peer_ms),
         "2 threads": (par, par_ms, peer, peer_ms),
         "CDT sequential": (cdt, cdt_ms, cdt_peer, cdt_peer_ms),
@@ -58,7 +67,7 @@ def versus_peers(t):
 def summary(t):
     head = ["comparison", "inputs", "median x", "min x", "max x", "pear faster on"]
     rows = []
-    for key in ("sequential", "2 threads", "CDT sequential", "CDT 2 threads"):
+    for key in KEYS:
         ratios = [ratio(c[3], c[1]) for c in (comparisons(t, i)[key] for i in t.inputs)]
         ratios = [r for r in ratios if r is not None]
         if ratios:
