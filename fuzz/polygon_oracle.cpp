@@ -94,25 +94,39 @@ bool starts_inside(const Ring& ring, int orientation, std::size_t i, const Point
   return orient2d(before, u, after) > 0 ? left_of_out && left_of_in : left_of_out || left_of_in;
 }
 
-/// Is simple ring `inner` inside simple ring `outer`? The two must not cross or overlap, so one
-/// point of inner off outer's vertices, or one chord from a shared vertex, decides.
-bool ring_inside(const Ring& inner, const Ring& outer, int outer_orientation) {
+/// Which sides of simple ring `outer` simple ring `inner` has parts on. The two must not cross or
+/// overlap, so each point of inner off outer's corners, and each chord of inner between two of
+/// outer's corners that is not an edge of outer, lies wholly inside or outside; every edge of
+/// inner is one of these or ends at such a point. One of them does not decide: rings touching at
+/// two corners can lie on both sides (fuzz: a hole passing out through a corner of the shell).
+struct Sides {
+  bool inside = false, outside = false;
+};
+
+Sides sides_of(const Ring& inner, const Ring& outer, int outer_orientation) {
   std::vector<Point> corners(outer.begin(), outer.end());
   std::sort(corners.begin(), corners.end(), lexicographic_less);
   const auto is_corner = [&](const Point& p) {
     return std::binary_search(corners.begin(), corners.end(), p, lexicographic_less);
   };
-  for (const Point& p : inner)
-    if (!is_corner(p)) return ring_contains_point(outer, p);
+  Sides sides;
   for (std::size_t k = 0; k < inner.size(); ++k) {
     const Point& u = inner[k];
     const Point& v = inner[(k + 1) % inner.size()];
-    const std::size_t i = std::find(outer.begin(), outer.end(), u) - outer.begin();
-    const std::size_t n = outer.size();
-    if (outer[(i + 1) % n] == v || outer[(i + n - 1) % n] == v) continue;  // a shared edge
-    return starts_inside(outer, outer_orientation, i, v);
+    bool inside = false;
+    if (!is_corner(u)) {
+      inside = ring_contains_point(outer, u);
+    } else if (!is_corner(v)) {
+      continue;  // the edge lies on v's side, which v's own test decides
+    } else {
+      const std::size_t i = std::find(outer.begin(), outer.end(), u) - outer.begin();
+      const std::size_t n = outer.size();
+      if (outer[(i + 1) % n] == v || outer[(i + n - 1) % n] == v) continue;  // a shared edge
+      inside = starts_inside(outer, outer_orientation, i, v);
+    }
+    (inside ? sides.inside : sides.outside) = true;
   }
-  return true;
+  return sides;
 }
 
 bool visits_a_point_twice(const Ring& ring) {
@@ -124,10 +138,10 @@ bool visits_a_point_twice(const Ring& ring) {
 /// Holes inside the outer ring and outside each other.
 bool holes_nest_correctly(const pear::Polygon& rings, const std::vector<int>& orientation) {
   for (std::size_t h = 1; h < rings.size(); ++h) {
-    if (!ring_inside(rings[h], rings[0], orientation[0])) return false;
+    if (sides_of(rings[h], rings[0], orientation[0]).outside) return false;
     for (std::size_t g = 1; g < h; ++g)
-      if (ring_inside(rings[h], rings[g], orientation[g]) ||
-          ring_inside(rings[g], rings[h], orientation[h]))
+      if (sides_of(rings[h], rings[g], orientation[g]).inside ||
+          sides_of(rings[g], rings[h], orientation[h]).inside)
         return false;
   }
   return true;

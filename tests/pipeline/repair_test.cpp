@@ -313,6 +313,17 @@ TEST(Refused, HoleOutsideTheOuterRingIsNamed) {
   }
 }
 
+// Found by the degenerate fuzzer (its oracle had decided by one point of the hole): a hole
+// touching the shell at two corners, (0,0) and (3,3), with one arc inside and one outside.
+TEST(Refused, HoleLeavingThroughACornerOfTheShellIsNamed) {
+  const Polygon p = {{{0, 0}, {3, 3}, {4, 0}}, {{3, 1}, {3, 5}, {0, 0}}};
+  Issue issue;
+  std::size_t ring = 9;
+  EXPECT_EQ(status_of(p, issue, ring), Status::not_simple);
+  EXPECT_EQ(issue, Issue::hole_outside_outer_ring);
+  EXPECT_EQ(ring, 1u);
+}
+
 TEST(Refused, HoleInsideAnotherHoleIsNamed) {
   const Polygon p = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
                      {{2, 2}, {2, 8}, {8, 8}, {8, 2}},
