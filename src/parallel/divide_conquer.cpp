@@ -66,13 +66,14 @@ bool split_into_parts(const Boundary& b, std::vector<PieceCorner> cycle,
 
 /// Which edges of a piece's triangle lie on the input boundary: those along a boundary edge of
 /// the piece (by point, as the clipper may use either node at a pinch) that is not a split
-/// segment (two Steiner points of one line).
-std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners,
+/// segment (two Steiner points of one line). `count` is the piece's corner count: the
+/// clipper's fallback may have added copies of nodes after them.
+std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners, std::uint32_t count,
                             const std::array<std::uint32_t, 3>& t) {
   std::uint8_t mask = 0;
   for (int c = 0; c < 3; ++c) {
     const std::uint32_t from = t[c], to = t[(c + 1) % 3];
-    const std::uint32_t after = from + 1 == piece.size() ? 0 : from + 1;  // as linked
+    const std::uint32_t after = from + 1 == count ? 0 : from + 1;  // as linked
     const bool split_segment = is_steiner(corners[from]) && is_steiner(corners[after]) &&
                                corner_line(corners[from]) == corner_line(corners[after]);
     if (piece.pos[after] == piece.pos[to] && !split_segment) mask |= 1 << c;
@@ -98,12 +99,12 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
       result.ok = false;
       return;
     }
-    fans.reduce(piece, corners, local);
+    fans.reduce(piece, corners, count, local);
     for (const auto& t : local) {
       const SteinerTriangle corner = {corners[t[0]], corners[t[1]], corners[t[2]]};
       if (is_steiner(corner[0]) || is_steiner(corner[1]) || is_steiner(corner[2])) {
         result.at_steiner.push_back(corner);
-        result.on_boundary.push_back(boundary_edges(piece, corners, t));
+        result.on_boundary.push_back(boundary_edges(piece, corners, count, t));
         continue;
       }
       const std::uint32_t u = corner_index(corner[0]), v = corner_index(corner[1]),

@@ -17,8 +17,8 @@ void FanReducer::add(const std::array<std::uint32_t, 3>& t, TriangleList& local)
     if (slot_[v] != no_slot) incident_[slot_[v]].push_back(id);
 }
 
-void FanReducer::reduce(const Boundary& piece, const PieceCorner* corners, TriangleList& local) {
-  const std::uint32_t count = piece.size();
+void FanReducer::reduce(const Boundary& piece, const PieceCorner* corners, std::uint32_t count,
+                        TriangleList& local) {
   slot_.assign(count, no_slot);
   std::uint32_t slots = 0;
   for (std::uint32_t i = 0; i < count; ++i)

@@ -14,12 +14,14 @@
 
 namespace pear::detail {
 
-/// Rewrites the triangles `local` (indices into `piece`, whose nodes are linked i -> i + 1)
-/// so that each Steiner point keeps as few triangles as its fan's shape allows. The triangles
-/// still triangulate the same cycle; a fan that is not one path around s is left as it is.
+/// Rewrites the triangles `local` (vertex indices of `piece`, whose `count` corners were linked
+/// i -> i + 1; the clipper's fallback may have added node copies after them) so that each
+/// Steiner point keeps as few triangles as its fan's shape allows. The triangles still
+/// triangulate the same cycle; a fan that is not one path around s is left as it is.
 class FanReducer {
  public:
-  void reduce(const Boundary& piece, const PieceCorner* corners, TriangleList& local);
+  void reduce(const Boundary& piece, const PieceCorner* corners, std::uint32_t count,
+              TriangleList& local);
 
  private:
   bool fan_path(std::uint32_t s, std::uint32_t count, const TriangleList& local);

@@ -151,6 +151,31 @@ TEST(DivideAndConquer, PinchNodesUsedInterchangeably) {
   expect_split_cleanly(polygon, {2, 3, 4, 8});
 }
 
+TEST(DivideAndConquer, PieceClippedByTheFallbackOnACrossingHole) {
+  // Regression (CI's fuzz run, parallel target): the last hole crosses itself (its first edge
+  // cuts its third at y = 3), and a piece through it needs the clipper's fallback, which adds
+  // node copies after the piece's corners. The fan reduction and the boundary-edge test took
+  // the grown node count for the corner count and read past the corners (heap-buffer-overflow
+  // under ASan, garbage without). Now: not_simple at that hole, the same at every thread count.
+  const Polygon polygon = {{{22, 14}, {17, 12}, {5, 12}, {0, 12}, {0, 0}, {22, 0}},
+                           {{9, 4}, {10, 4}, {10, 3}, {9, 3}},
+                           {{6, 9}, {7, 9}, {7, 8}, {6, 8}},
+                           {{7, 10}, {17, 10}, {17, 5}, {8, 5}},
+                           {{13, 4}, {14, 2.0078125}, {14, 3}, {13, 3}}};
+  for (unsigned k : {2u, 3u, 4u, 8u}) {
+    SCOPED_TRACE("partitions " + std::to_string(k));
+    const auto result = triangulate(
+        polygon,
+        Options{.algorithm = Algorithm::divide_and_conquer, .threads = 2, .partitions = k});
+    EXPECT_EQ(result.status, Status::not_simple);
+    EXPECT_TRUE(std::any_of(result.diagnostics.begin(), result.diagnostics.end(),
+                            [](const Diagnostic& d) { return d.is_not_simple() && d.ring == 4; }));
+    const pear::Run one = divide_and_conquer(polygon, k, 1);
+    for (unsigned threads : {2u, 8u})
+      EXPECT_EQ(divide_and_conquer(polygon, k, threads).triangles, one.triangles) << threads;
+  }
+}
+
 TEST(DivideAndConquer, MorePartitionsThanVertices) {
   expect_valid({{{0, 0}, {1, 0}, {0, 1}}}, {1, 2, 8, 64});
   expect_valid({rectangle(0, 0, 1, 1)}, {2, 16});
