@@ -3,6 +3,7 @@
 // algorithm including automatic.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <climits>
 #include <string>
 
@@ -80,6 +81,30 @@ TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
   EXPECT_FALSE(same(2, Algorithm::partition_and_cut));
   EXPECT_TRUE(same(4, Algorithm::partition_and_cut));
   EXPECT_FALSE(same(4, Algorithm::divide_and_conquer));
+}
+
+// A polygon the check finds not simple: automatic goes straight to the sequential engine's
+// best effort at every partition count, instead of clipping parts in parallel and falling back
+// (the Natural Earth land mass land_0004 ran slower at 2 threads than at 1).
+TEST(Options, AutomaticTakesNotSimplePolygonsSequentially) {
+  Polygon polygon = generate_polygon("koch", 40000, 3);
+  double x0 = polygon[0][0].x, x1 = x0, y0 = polygon[0][0].y;
+  for (const Point& p : polygon[0])
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y);
+  // A hole reaching out below the shell: its edges cross the outer ring.
+  const double mid = (x0 + x1) / 2, width = (x1 - x0) / 50;
+  polygon.push_back({{mid, y0 - width}, {mid - width, y0 + width}, {mid + width, y0 + width}});
+  const auto sequential = triangulate(polygon, {.algorithm = Algorithm::sequential, .threads = 1});
+  ASSERT_EQ(sequential.status, Status::not_simple);
+  for (unsigned partitions : {2u, 4u}) {
+    SCOPED_TRACE(std::to_string(partitions) + " partitions");
+    RunProfile profile;
+    const auto chosen =
+        triangulate(polygon, {.threads = 2, .partitions = partitions, .profile = &profile});
+    EXPECT_EQ(chosen.status, Status::not_simple);
+    EXPECT_EQ(chosen.triangles, sequential.triangles);
+    for (const auto& phase : profile.phases) EXPECT_NE(phase.name, "fall back to sequential");
+  }
 }
 
 }  // namespace
