@@ -7,8 +7,8 @@ usage: /usr/bin/python3 bench/python/bench_python.py [--build BUILD] [--rounds N
 Imports pear from BUILD/python (default build/; or an installed pear when that has none).
 Every folder's polygons are loaded once as numpy arrays (coordinates without closing points,
 mapbox_earcut's ring ends), as ragged arrays, as shapely polygons and as WKB. Each round runs
-every candidate once over the folder, the candidates interleaved so that a busy machine slows
-them alike; the table gives each one's median wall-clock time per polygon, polygons per second,
+every candidate once over the folder (after an untimed warm-up run of it, see measure), the
+candidates interleaved so that a busy machine slows them alike; the table gives each one's median wall-clock time per polygon, polygons per second,
 the median over rounds of mapbox_earcut's time over its time in the same round, and its median
 CPU time (all threads) per polygon. The load average
 before and after is printed (docs/benchmarks.md quotes it). shapely 1.8 (Debian 12) has no
@@ -107,14 +107,20 @@ def candidates(pear, polygons, large):
     return runs
 
 
-def measure(runs, rounds, reference):
+def measure(runs, rounds, reference, warm_up=True):
     """Median wall-clock and CPU seconds per candidate, and the median of per-round wall-clock
     ratios to the reference. On a busy machine the CPU time of a one-thread candidate is the
-    steadier figure (it does not count the time other processes hold the core)."""
+    steadier figure (it does not count the time other processes hold the core). With warm_up
+    (calls of milliseconds), each timed run follows an untimed one of the same candidate: a
+    core that sat idle through the previous candidate runs the next few milliseconds slower (on the 2-core VM a 2-thread batch of the
+    counties measured 1.6x one thread right after a one-thread candidate, 1.8-2x warm; the
+    C++ batch alike), which would charge a 2-thread candidate for its neighbour's idle core."""
     wall = {name: [] for name in runs}
     cpu = {name: [] for name in runs}
     for _ in range(rounds):
         for name, run in runs.items():
+            if warm_up:
+                run()
             start, start_cpu = time.perf_counter(), time.process_time()
             run()
             wall[name].append(time.perf_counter() - start)
@@ -123,6 +129,22 @@ def measure(runs, rounds, reference):
               for name in runs}
     return ({name: statistics.median(t) for name, t in wall.items()},
             {name: statistics.median(t) for name, t in cpu.items()}, ratios)
+
+
+def steady_scaling(one, two, blocks=5, calls=21):
+    """The 2-thread batch against the 1-thread one in steady state: `calls` timed calls of one
+    back to back (after 2 untimed), then of the other; the median over `blocks` such pairs of
+    the ratio of their median call times. What a long batch (or a Dask worker going through its
+    partitions) sees, where the interleaved rounds above start each call on a core that idled."""
+    def median_call(run):
+        times = []
+        for i in range(calls + 2):
+            start = time.perf_counter()
+            run()
+            if i >= 2:
+                times.append(time.perf_counter() - start)
+        return statistics.median(times)
+    return statistics.median(median_call(one) / median_call(two) for _ in range(blocks))
 
 
 def main():
@@ -141,7 +163,8 @@ def main():
         large = name == "coast"
         runs = candidates(pear, polygons, large)
         rounds = max(3, args.rounds // 4) if large else args.rounds
-        medians, cpu, ratios = measure(runs, rounds, "mapbox_earcut, per polygon")
+        medians, cpu, ratios = measure(runs, rounds, "mapbox_earcut, per polygon",
+                                       warm_up=not large)
         vertices = sum(len(c) for c, _ in polygons)
         print(f"\n{name}: {len(polygons)} polygons, {vertices} vertices "
               f"({vertices / len(polygons):.0f} per polygon), median of {rounds} rounds\n")
@@ -156,8 +179,11 @@ def main():
         if not large:
             one = medians["pear batch (ragged), 1 thread"]
             two = medians["pear batch (ragged), 2 threads"]
+            steady = steady_scaling(runs["pear batch (ragged), 1 thread"],
+                                    runs["pear batch (ragged), 2 threads"])
             print(f"\nbatch (1 thread) against the per-polygon loop: {loop / one:.2f}x; "
-                  f"2 threads against 1: {one / two:.2f}x")
+                  f"2 threads against 1: {one / two:.2f}x in the rounds, {steady:.2f}x with "
+                  "calls back to back (median of 5 blocks of 21)")
     print(f"\nload average after: {' '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 
