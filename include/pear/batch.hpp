@@ -8,8 +8,10 @@
 //         use(result.triangles[t]);        // indices into the batch's points
 //
 // Each polygon is triangulated as pear::triangulate would do it with the same Options, by
-// one engine per worker of pear's scheduler; the result is the same for any thread count and
-// schedule (polygon order, then each polygon's own deterministic output).
+// one engine per worker of pear's scheduler; for fixed Options::partitions the result is the
+// same for any thread count and schedule (polygon order, then each polygon's own deterministic
+// output). Left at 0, partitions is the thread count, which decides how polygons of 20,000
+// vertices or more are cut, as for pear::triangulate.
 #pragma once
 
 #include <algorithm>
