@@ -8,12 +8,13 @@ Imports pear from BUILD/python (default build/; or an installed pear when that h
 Every folder's polygons are loaded once as numpy arrays (coordinates without closing points,
 mapbox_earcut's ring ends), as ragged arrays, as shapely polygons and as WKB. Each round runs
 every candidate once over the folder (after an untimed warm-up run of it, see measure), the
-candidates interleaved so that a busy machine slows them alike; the table gives each one's median wall-clock time per polygon, polygons per second,
-the median over rounds of mapbox_earcut's time over its time in the same round, and its median
-CPU time (all threads) per polygon. The load average
-before and after is printed (docs/benchmarks.md quotes it). shapely 1.8 (Debian 12) has no
-polygon triangulation (shapely 2's constrained_delaunay_triangles needs GEOS 3.10 and
-shapely 2), so shapely appears as an input format only. CI does not run this.
+candidates interleaved so that a busy machine slows them alike; the table gives each one's
+median wall-clock time per polygon, polygons per second, the median over rounds of
+mapbox_earcut's time over its time in the same round, and its median CPU time (all threads)
+per polygon. The load average before and after is printed (docs/benchmarks.md quotes it).
+shapely 1.8 (Debian 12) has no polygon triangulation (shapely 2's
+constrained_delaunay_triangles needs GEOS 3.10 and shapely 2), so shapely appears as an input
+format only. CI does not run this.
 """
 import argparse
 import json
@@ -112,9 +113,10 @@ def measure(runs, rounds, reference, warm_up=True):
     ratios to the reference. On a busy machine the CPU time of a one-thread candidate is the
     steadier figure (it does not count the time other processes hold the core). With warm_up
     (calls of milliseconds), each timed run follows an untimed one of the same candidate: a
-    core that sat idle through the previous candidate runs the next few milliseconds slower (on the 2-core VM a 2-thread batch of the
-    counties measured 1.6x one thread right after a one-thread candidate, 1.8-2x warm; the
-    C++ batch alike), which would charge a 2-thread candidate for its neighbour's idle core."""
+    core that sat idle through the previous candidate runs the next few milliseconds slower
+    (on the 2-core VM a 2-thread batch of the counties measured 1.6x one thread right after a
+    one-thread candidate, 1.8-2x warm; the C++ batch alike), which would charge a 2-thread
+    candidate for its neighbour's idle core."""
     wall = {name: [] for name in runs}
     cpu = {name: [] for name in runs}
     for _ in range(rounds):

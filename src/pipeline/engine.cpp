@@ -22,9 +22,13 @@ constexpr std::size_t small_limit = 128;
 /// work and keeps `top`'s quality: it measured fastest at 2 threads on every family and was never
 /// slower than sequential. With more, its recursion costs work on stars and combs while
 /// partition-and-cut's chains keep scaling (docs/parallel.md, "What automatic picks").
-Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions) {
+/// automatic's choice. A polygon found not simple gets the sequential engine's best effort: the
+/// parallel variants need a simple boundary and, after clipping their parts, fall back to it
+/// (a 84k-vertex country: 26 ms of parts thrown away, slower at 2 threads than at 1).
+Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions,
+                  bool not_simple) {
   if (requested != Algorithm::automatic) return requested;
-  if (partitions < 2 || nodes < parallel_threshold) return Algorithm::sequential;
+  if (partitions < 2 || nodes < parallel_threshold || not_simple) return Algorithm::sequential;
   return partitions == 2 ? Algorithm::divide_and_conquer : Algorithm::partition_and_cut;
 }
 
@@ -210,13 +214,8 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
     ctx.executor = where.get();
   if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;
   out.reserve(boundary_.size());
-  // A polygon found not simple gets the sequential engine's best effort under `automatic`: the
-  // parallel variants need a simple boundary and, after clipping their parts, fall back to it
-  // (a 84k-vertex country: 26 ms of parts thrown away, slower at 2 threads than at 1).
   const Algorithm algorithm =
-      status == Status::not_simple && options.algorithm == Algorithm::automatic
-          ? Algorithm::sequential
-          : resolve(options.algorithm, boundary_.size(), ctx.partitions);
+      resolve(options.algorithm, boundary_.size(), ctx.partitions, status == Status::not_simple);
   std::uint32_t best_effort_vertex = 0;
   if (!clip(algorithm, options, ctx, out, best_effort_vertex) && status == Status::ok) {
     diagnostics.push_back(why_not_valid(input, options.check_simplicity, best_effort_vertex));
