@@ -48,6 +48,7 @@ class SmallClipper {
 
   Boundary b_;
   std::vector<std::int64_t> key_;  ///< `top`'s order of each convex node (smaller first)
+  std::vector<double> side_;       ///< squared length of the edge from each node (`top`)
   NodeSet reflex_;                 ///< strictly reflex nodes still on the boundary
   NodeSet convex_;                 ///< strictly convex nodes still on the boundary
   NodeSet candidates_;             ///< convex nodes not found blocked since they last changed

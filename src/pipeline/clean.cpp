@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
@@ -11,11 +12,16 @@ namespace {
 
 bool coordinate_in_range(double c) {
   const double m = std::fabs(c);
-  return m == 0.0 || (m >= min_nonzero_coordinate && m <= max_coordinate);
+  return (m == 0.0) | ((m >= min_nonzero_coordinate) & (m <= max_coordinate));
 }
 
-/// First error among the coordinates of all rings, if any.
+/// First error among the coordinates of all rings, if any. One test per point without a branch
+/// first (NaN and infinities fail the range test too); the error is named only when there is one.
 bool check_coordinates(const PolygonView& in, std::vector<Diagnostic>& diagnostics) {
+  bool all_in_range = true;
+  for (const Point& p : in.points)
+    all_in_range &= coordinate_in_range(p.x) & coordinate_in_range(p.y);
+  if (all_in_range) return true;
   for (std::size_t r = 0; r + 1 < in.ring_offsets.size(); ++r) {
     for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {
       const Point& p = in.points[i];
@@ -65,26 +71,45 @@ bool folds_back(const Point& a, const Point& b, const Point& c) {
 }
 
 /// Appends ring `ring` of the input without repeated consecutive points (the first occurrence
-/// stays) nor a repeated closing point.
+/// stays) nor a repeated closing point. Each point is written, and kept by a count, not a branch.
 void append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& out) {
   const std::size_t first = out.points.size();
-  for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
-    if (out.points.size() > first && out.points.back() == in.points[i]) continue;
-    out.points.push_back(in.points[i]);
-    out.original.push_back(i);
+  const std::uint32_t begin = in.ring_offsets[ring], end = in.ring_offsets[ring + 1];
+  out.points.resize(first + (end - begin));
+  out.original.resize(first + (end - begin));
+  std::size_t kept = first;
+  Point last = {std::numeric_limits<double>::quiet_NaN(), 0};  // equal to no point
+  for (std::uint32_t i = begin; i < end; ++i) {
+    const Point p = in.points[i];
+    out.points[kept] = p;
+    out.original[kept] = i;
+    kept += (p.x != last.x) | (p.y != last.y);
+    last = p;
   }
-  while (out.points.size() > first + 1 && out.points.back() == out.points[first]) {
-    out.points.pop_back();
-    out.original.pop_back();
-  }
+  while (kept > first + 1 && out.points[kept - 1] == out.points[first]) --kept;
+  out.points.resize(kept);
+  out.original.resize(kept);
 }
 
+/// Whether any corner of the ring from `first` on folds back (a tip). Every corner first
+/// without a branch: a positive dot product (see folds_back) or an orientation the filter of
+/// orient2d finds clearly nonzero rules it out. Real rings turn sharply at a quarter of their
+/// corners, but tips are rare: the exact test then runs for almost none.
 bool has_tip(const std::vector<Point>& pts, std::size_t first) {
   const std::size_t n = pts.size() - first;
   if (n < 3) return false;
-  for (std::size_t k = 0; k < n; ++k)
-    if (folds_back(pts[first + (k + n - 1) % n], pts[first + k], pts[first + (k + 1) % n]))
-      return true;
+  const Point* p = pts.data() + first;
+  bool maybe = false;
+  for (std::size_t k = 0, before = n - 1; k < n; before = k++) {
+    const Point &a = p[before], &b = p[k], &c = p[k + 1 == n ? 0 : k + 1];
+    const double left = (a.x - c.x) * (b.y - c.y), right = (a.y - c.y) * (b.x - c.x);
+    const bool turns =
+        std::fabs(left - right) > 2 * orient2d_filter_bound * (std::fabs(left) + std::fabs(right));
+    maybe |= !((b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0) & !turns;
+  }
+  if (!maybe) return false;
+  for (std::size_t k = 0, before = n - 1; k < n; before = k++)
+    if (folds_back(p[before], p[k], p[k + 1 == n ? 0 : k + 1])) return true;
   return false;
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "geometry/box_scan.hpp"
 #include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
 
@@ -93,8 +94,13 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
     EdgeBox all = {pts[i * chunk].x, pts[i * chunk].y, pts[i * chunk].x, pts[i * chunk].y};
     for (std::size_t e = i * chunk; e < end; ++e) {
       const Point &a = pts[e], &b = pts[edges_.next[e]];
-      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                         std::max(a.y, b.y)};
+      const EdgeBox box = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                           std::max(a.y, b.y)};
+      edges_.boxes[e] = box;
+      if (e < BoxColumns::capacity) {
+        columns_.x0[e] = box.x0, columns_.y0[e] = box.y0;
+        columns_.x1[e] = box.x1, columns_.y1[e] = box.y1;
+      }
       all = merged(all, edges_.boxes[e]);
     }
     bounds[i] = all;
@@ -194,9 +200,69 @@ void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
             [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
 }
 
-SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find_crossings) {
-  SmallVerdict verdict;
+namespace {
+
+/// check_small's look at edges e and f whose boxes meet in x: records a shared endpoint
+/// position, and a conflict (as its smaller edge) when it is smaller than `smallest`.
+void visit_pair(const RingEdges& edges, std::uint32_t e, std::uint32_t f, bool find_crossings,
+                std::uint32_t& smallest, SmallVerdict& verdict) {
+  const EdgeBox &s = edges.boxes[e], &t = edges.boxes[f];
+  // One branch (`&`): most pairs are apart in y, which the predictor then learns.
+  if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (edges.next[e] != f) & (edges.next[f] != e))) return;
+  const auto& pts = *edges.points;
+  const Point &a = pts[e], &b = pts[edges.next[e]], &c = pts[f], &d = pts[edges.next[f]];
+  if (a == c || a == d || b == c || b == d) verdict.touching = true;
+  if (find_crossings && std::min(e, f) < smallest && edges.conflict(e, f))
+    smallest = std::min(e, f);
+}
+
+}  // namespace
+
+SmallVerdict SimplicityCheck::check_one_small_ring(const CleanPolygon& polygon,
+                                                   bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  const auto& pts = polygon.points;
+  BoxColumns& c = columns_;
+  for (std::uint32_t e = 0; e < n; ++e) {
+    const Point &a = pts[e], &b = pts[e + 1 == n ? 0 : e + 1];
+    c.x0[e] = std::min(a.x, b.x), c.y0[e] = std::min(a.y, b.y);
+    c.x1[e] = std::max(a.x, b.x), c.y1[e] = std::max(a.y, b.y);
+  }
+  // Every pair of edges that are not neighbours (e's are e +- 1, and 0 and n - 1: the bounds
+  // leave them out). Neighbours conflict only by folding back at their shared vertex, and
+  // clean_polygon leaves no such tip. A row is looked at again only when a box meets (2% of
+  // the rows of the counties); the ring's edges are indexed for the exact tests only then.
+  SmallVerdict verdict;
+  std::uint32_t smallest = SmallestViolation::none;
+  bool indexed = false;
+  for (std::uint32_t e = 0; e + 2 < n; ++e) {
+    const std::uint32_t first = e + 2, end = e == 0 ? n - 1 : n;
+    const Box box = {c.x0[e], c.y0[e], c.x1[e], c.y1[e]};
+    if (!any_box_meets(c.x0.data(), c.y0.data(), c.x1.data(), c.y1.data(), first, end, box))
+      continue;
+    if (!indexed) {
+      edges_.points = &pts;
+      edges_.next.resize(n);
+      edges_.boxes.resize(n);
+      for (std::uint32_t i = 0; i < n; ++i) {
+        edges_.next[i] = i + 1 == n ? 0 : i + 1;
+        edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
+      }
+      indexed = true;
+    }
+    for (std::uint32_t f = first; f < end; ++f)
+      if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
+        visit_pair(edges_, e, f, find_crossings, smallest, verdict);
+  }
+  if (smallest != SmallestViolation::none) verdict.violation = smallest;
+  return verdict;
+}
+
+SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find_crossings) {
+  const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  if (polygon.ring_count() == 1 && n <= BoxColumns::capacity)
+    return check_one_small_ring(polygon, find_crossings);
+  SmallVerdict verdict;
   const auto& pts = polygon.points;
   edges_.points = &pts;
   edges_.next.resize(n);
@@ -221,54 +287,29 @@ SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find
   }
   const auto& boxes = edges_.boxes;
   const auto visit = [&](std::uint32_t e, std::uint32_t f) {
-    const EdgeBox &s = boxes[e], &t = boxes[f];
-    // One branch (`&`): most pairs are apart in y, which the predictor then learns.
-    if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (edges_.next[e] != f) & (edges_.next[f] != e))) return;
-    const Point &a = pts[e], &b = pts[edges_.next[e]], &c = pts[f], &d = pts[edges_.next[f]];
-    if (a == c || a == d || b == c || b == d) verdict.touching = true;
-    if (find_crossings && std::min(e, f) < smallest && edges_.conflict(e, f))
-      smallest = std::min(e, f);
+    visit_pair(edges_, e, f, find_crossings, smallest, verdict);
   };
-  // Every pair; `one_ring`: edges are numbered along one ring, so e's neighbours are e +- 1
-  // (and 0 and n - 1), which the count leaves out by its bounds instead of looking them up.
-  const auto all_pairs = [&](bool one_ring) {
-    for (std::uint32_t e = 0; e + 1 < n; ++e) {
-      const EdgeBox& s = boxes[e];
-      const std::uint32_t first = one_ring ? e + 2 : e + 1;
-      const std::uint32_t end = one_ring && e == 0 ? n - 1 : n;
-      unsigned meeting = 0;
-      for (std::uint32_t f = first; f < end; ++f) {
-        const EdgeBox& t = boxes[f];
-        meeting += (t.x0 <= s.x1) & (s.x0 <= t.x1) & (t.y0 <= s.y1) & (s.y0 <= t.y1);
-      }
-      if (meeting == 0) continue;
-      for (std::uint32_t f = first; f < end; ++f)
-        if (boxes[f].x0 <= s.x1 && s.x0 <= boxes[f].x1) visit(e, f);
-    }
-  };
-  if (polygon.ring_count() == 1 && n <= 64) {
-    // All pairs, the box tests without branches: cheaper than any sorting at this size. Only
-    // rows with a meeting pair are looked at again.
-    all_pairs(true);
-  } else {
-    // Every pair of edges from two runs whose x-ranges meet: for each edge of the run that
-    // starts first, a window of the other run's edges (both in increasing x).
-    monotone_chains(polygon);
-    for (std::size_t i = 0; i < chains_.size(); ++i) {
-      for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
-        std::uint32_t window = chains_[j].begin;
-        for (std::uint32_t k = chains_[i].begin; k < chains_[i].end; ++k) {
-          const std::uint32_t e = chain_order_[k];
-          while (window < chains_[j].end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
-          for (std::uint32_t m = window;
-               m < chains_[j].end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
-            visit(e, chain_order_[m]);
-        }
+  // Every pair of edges from two runs whose x-ranges meet: for each edge of the run that
+  // starts first, a window of the other run's edges (both in increasing x).
+  monotone_chains(polygon);
+  for (std::size_t i = 0; i < chains_.size(); ++i) {
+    for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
+      std::uint32_t window = chains_[j].begin;
+      for (std::uint32_t k = chains_[i].begin; k < chains_[i].end; ++k) {
+        const std::uint32_t e = chain_order_[k];
+        while (window < chains_[j].end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
+        for (std::uint32_t m = window;
+             m < chains_[j].end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
+          visit(e, chain_order_[m]);
       }
     }
-    // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
-    // found above): then all pairs, for the smallest edge in any conflict, as the grid gives.
-    if (find_crossings && smallest != SmallestViolation::none) all_pairs(false);
+  }
+  // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
+  // found above): then every pair, for the smallest edge in any conflict, as the grid gives.
+  if (find_crossings && smallest != SmallestViolation::none) {
+    for (std::uint32_t e = 0; e + 1 < n; ++e)
+      for (std::uint32_t f = e + 1; f < n; ++f)
+        if (boxes[f].x0 <= boxes[e].x1 && boxes[e].x0 <= boxes[f].x1) visit(e, f);
   }
   if (smallest != SmallestViolation::none) verdict.violation = smallest;
   return verdict;

@@ -177,6 +177,16 @@ class SimplicityCheck {
   std::vector<Chain> chains_;
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
+
+  /// check_small's edge boxes of one ring of at most 64 edges, a column per side: the pair
+  /// tests then compare two boxes per instruction.
+  struct BoxColumns {
+    static constexpr std::uint32_t capacity = 64;
+    std::array<double, capacity> x0, y0, x1, y1;
+  };
+  BoxColumns columns_;
+  /// check_small for one ring of at most BoxColumns::capacity edges.
+  SmallVerdict check_one_small_ring(const CleanPolygon& polygon, bool find_crossings);
 };
 
 }  // namespace pear::detail
