@@ -34,6 +34,22 @@ std::int64_t top_key(const Point& a, const Point& c, double before, double after
 
 }  // namespace
 
+void SmallClipper::Slabs::build(std::span<const Point> points, double Point::*axis,
+                                std::uint32_t words) {
+  double low = points[0].*axis, high = low;
+  for (const Point& p : points) low = std::min(low, p.*axis), high = std::max(high, p.*axis);
+  origin = low;
+  scale = high > low ? count / (high - low) : 0;
+  for (NodeSet& set : upto) std::fill_n(set.words.begin(), words, 0);
+  for (std::uint32_t i = 0; i < points.size(); ++i) upto[slab(points[i].*axis)].add(i);
+  for (std::uint32_t w = 0; w < words; ++w) {
+    from[count - 1].words[w] = upto[count - 1].words[w];
+    for (std::uint32_t s = count - 1; s-- > 0;)
+      from[s].words[w] = upto[s].words[w] | from[s + 1].words[w];
+    for (std::uint32_t s = 1; s < count; ++s) upto[s].words[w] |= upto[s - 1].words[w];
+  }
+}
+
 void SmallClipper::load(std::span<const Point> points, std::span<const std::uint32_t> original) {
   const auto n = static_cast<std::uint32_t>(points.size());
   b_.pos.assign(points.begin(), points.end());
@@ -43,6 +59,7 @@ void SmallClipper::load(std::span<const Point> points, std::span<const std::uint
   key_.resize(n);
   side_.resize(n);
   words_ = (n + 63) / 64;
+  stale_words_ = ~0u;
   reflex_.words.fill(0);
   convex_.words.fill(0);
   candidates_.words.fill(0);
@@ -52,6 +69,11 @@ void SmallClipper::load(std::span<const Point> points, std::span<const std::uint
     if (keyed_) side_[i] = squared_distance(points[i], points[b_.next[i]]);
   }
   for (std::uint32_t i = 0; i < n; ++i) refresh(i);
+  slabbed_ = words_ > 1;
+  if (slabbed_) {
+    xs_.build(points, &Point::x, words_);
+    ys_.build(points, &Point::y, words_);
+  }
   remaining_ = n;
   anchor_ = 0;
 }
@@ -69,6 +91,7 @@ inline void SmallClipper::refresh(std::uint32_t v) {
   reflex_.words[w] = (reflex_.words[w] & ~bit) | reflex;
   convex_.words[w] = (convex_.words[w] & ~bit) | convex;
   candidates_.words[w] = (candidates_.words[w] & ~bit) | convex;
+  stale_words_ |= 1u << w;
   if (keyed_) key_[v] = top_key(a, c, side_[b_.prev[v]], side_[v], turn);
 }
 
@@ -91,6 +114,13 @@ bool SmallClipper::is_ear(std::uint32_t v) const {
   NodeSet others = reflex_;  // the ear's own corners cannot block it
   others.erase(p);
   others.erase(n);
+  if (slabbed_) {
+    const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
+    const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
+    for (std::uint32_t w = 0; w < words_; ++w)
+      others.words[w] &= xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
+                         ys_.from[sy0].words[w];
+  }
   for (std::uint32_t w = 0; w < words_; ++w) {
     for (std::uint64_t set = others.words[w]; set != 0; set &= set - 1) {
       const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
@@ -108,29 +138,45 @@ void SmallClipper::clip(std::uint32_t v, TriangleList& out) {
   b_.link(p, n);
   if (keyed_) side_[p] = squared_distance(b_.pos[p], b_.pos[n]);
   convex_.erase(v);
-  candidates_.erase(v);
+  drop_candidate(v);
   anchor_ = n;
   --remaining_;
   refresh(p);
   refresh(n);
 }
 
-/// The candidate with the smallest key, the lowest node among equals; UINT32_MAX for none.
-std::uint32_t SmallClipper::best_candidate() const {
-  std::uint32_t w = 0;
-  while (w < words_ && candidates_.words[w] == 0) ++w;
-  if (w == words_) return UINT32_MAX;
-  std::uint32_t best = w * 64 + static_cast<std::uint32_t>(std::countr_zero(candidates_.words[w]));
+void SmallClipper::drop_candidate(std::uint32_t v) {
+  candidates_.erase(v);
+  stale_words_ |= 1u << (v / 64);
+}
+
+/// The candidate of word w with the smallest key, the lowest node among equals; UINT32_MAX for
+/// none.
+std::uint32_t SmallClipper::best_in_word(std::uint32_t w) const {
+  std::uint64_t set = candidates_.words[w];
+  if (set == 0) return UINT32_MAX;
+  std::uint32_t best = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
   std::int64_t best_key = key_[best];
-  for (; w < words_; ++w) {
-    for (std::uint64_t set = candidates_.words[w]; set != 0; set &= set - 1) {
-      const std::uint32_t v = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
-      // Selects, not branches: which key is smaller is a coin toss for the predictor.
-      const bool better = key_[v] < best_key;
-      best = better ? v : best;
-      best_key = better ? key_[v] : best_key;
-    }
+  for (set &= set - 1; set != 0; set &= set - 1) {
+    const std::uint32_t v = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+    // Selects, not branches: which key is smaller is a coin toss for the predictor.
+    const bool better = key_[v] < best_key;
+    best = better ? v : best;
+    best_key = better ? key_[v] : best_key;
   }
+  return best;
+}
+
+/// The candidate with the smallest key, the lowest node among equals; UINT32_MAX for none.
+std::uint32_t SmallClipper::best_candidate() {
+  if (words_ == 1) return best_in_word(0);
+  std::uint32_t best = UINT32_MAX;
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    if ((stale_words_ >> w) & 1) word_best_[w] = best_in_word(w);
+    const std::uint32_t v = word_best_[w];
+    if (v != UINT32_MAX && (best == UINT32_MAX || key_[v] < key_[best])) best = v;
+  }
+  stale_words_ = 0;
   return best;
 }
 
@@ -145,10 +191,11 @@ bool SmallClipper::clip_by_key(TriangleList& out) {
       if (rescanned) return false;
       rescanned = true;
       candidates_ = convex_;
+      stale_words_ = ~0u;
       continue;
     }
     if (!is_ear(best)) {
-      candidates_.erase(best);
+      drop_candidate(best);
       continue;
     }
     rescanned = false;

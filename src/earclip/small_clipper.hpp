@@ -1,10 +1,12 @@
-// Ear clipping for small polygons: one ring of at most 128 vertices, simple, no position
+// Ear clipping for small polygons: one ring of at most 384 vertices, simple, no position
 // twice (the pipeline checks this first). The same ear test as the general clipper
 // (ear_test.hpp's blocks()), but the strictly reflex, convex and candidate nodes are bit sets,
 // the next ear is the candidate with the smallest key (a scan of the set), and the key is read
 // from the bits of the doubles instead of computed with roots: no grid, bucket queue or pinch
-// table to set up. Each step scans the sets, so the cost per vertex grows with n: past about
-// 128 vertices the general clipper is faster (bench_small's crossover; docs/engine.md).
+// table to set up. Past 64 nodes, slabs narrow the ear test to reflex nodes near the ear and
+// the scan to the words that changed; each step still scans, so the cost per vertex grows with
+// n: at about 512 vertices the general clipper is as fast (bench_small's crossover;
+// docs/engine.md).
 #pragma once
 
 #include <array>
@@ -19,7 +21,8 @@ namespace pear::detail {
 
 class SmallClipper {
  public:
-  static constexpr std::size_t max_nodes = 128;
+  static constexpr std::size_t max_nodes = 384;
+  static constexpr std::size_t max_words = max_nodes / 64;
 
   /// Clips the counterclockwise ring `points` (original[i]: the caller's index of point i; at
   /// most max_nodes), appending its n - 2 triangles to `out`. Returns false, with `out` as it
@@ -39,12 +42,28 @@ class SmallClipper {
 
   /// One bit per node, in words of 64 kept in place (no allocation, no indirection).
   struct NodeSet {
-    std::array<std::uint64_t, max_nodes / 64> words;
+    std::array<std::uint64_t, max_words> words;
     void add(std::uint32_t v) { words[v / 64] |= std::uint64_t{1} << (v % 64); }
     void erase(std::uint32_t v) { words[v / 64] &= ~(std::uint64_t{1} << (v % 64)); }
     bool contains(std::uint32_t v) const { return (words[v / 64] >> (v % 64)) & 1; }
   };
-  std::uint32_t best_candidate() const;
+  std::uint32_t best_candidate();
+  std::uint32_t best_in_word(std::uint32_t w) const;
+  void drop_candidate(std::uint32_t v);
+
+  /// The nodes in each of `count` slabs along one axis, accumulated from either end: those
+  /// whose coordinate lies in [lo, hi] are among upto[slab(hi)] & from[slab(lo)]. slab() is
+  /// monotone, so no node in the range is left out. Past 64 nodes the ear test then looks at
+  /// the reflex nodes near its triangle instead of all of them.
+  struct Slabs {
+    static constexpr std::uint32_t count = 16;
+    double origin = 0, scale = 0;
+    std::array<NodeSet, count> upto, from;
+    std::uint32_t slab(double c) const {
+      return std::min(count - 1, static_cast<std::uint32_t>((c - origin) * scale));
+    }
+    void build(std::span<const Point> points, double Point::*axis, std::uint32_t words);
+  };
 
   Boundary b_;
   std::vector<std::int64_t> key_;  ///< `top`'s order of each convex node (smaller first)
@@ -52,8 +71,14 @@ class SmallClipper {
   NodeSet reflex_;                 ///< strictly reflex nodes still on the boundary
   NodeSet convex_;                 ///< strictly convex nodes still on the boundary
   NodeSet candidates_;             ///< convex nodes not found blocked since they last changed
-  bool keyed_ = true;              ///< whether key_ is kept (`top`)
-  std::uint32_t words_ = 0;        ///< words of the sets in use
+  /// Each word's candidate with the smallest key (UINT32_MAX: none), found again only for the
+  /// words whose bit in stale_words_ is set: past 64 nodes a step scans what changed.
+  std::array<std::uint32_t, max_words> word_best_;
+  std::uint32_t stale_words_ = 0;
+  Slabs xs_, ys_;
+  bool slabbed_ = false;     ///< whether xs_ and ys_ are built (more than one word)
+  bool keyed_ = true;        ///< whether key_ is kept (`top`)
+  std::uint32_t words_ = 0;  ///< words of the sets in use
   std::uint32_t remaining_ = 0;
   std::uint32_t anchor_ = 0;  ///< a live node
 };

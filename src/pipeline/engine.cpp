@@ -15,7 +15,7 @@ constexpr std::size_t parallel_threshold = 20'000;
 
 /// Up to this many vertices a polygon of one ring takes the small path (measured:
 /// docs/engine.md, "Small polygons").
-constexpr std::size_t small_limit = 128;
+constexpr std::size_t small_limit = SmallClipper::max_nodes;
 
 /// `automatic` depends on the size and the partitions, never on the threads: the output does not
 /// change with the machine. With two partitions divide-and-conquer's one split line halves the

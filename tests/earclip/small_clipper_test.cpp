@@ -1,5 +1,5 @@
 // The small-polygon path (src/earclip/small_clipper.cpp, chosen by the pipeline for one ring of
-// at most 128 vertices): on simple rings of every synthetic family, with collinear runs added,
+// at most 384 vertices): on simple rings of every synthetic family, with collinear runs added,
 // and on rectilinear staircases, it must give n - 2 triangles that the validator accepts, for
 // `top` and `fast`; through the public API its results must be as valid as the general
 // engine's on the same polygons; on rings that are not simple it must end and either say so
@@ -71,7 +71,7 @@ void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
 TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
   int polygons = 0;
   for (std::string_view kind : {"star", "comb", "koch", "hilbert", "random"}) {
-    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u}) {
+    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u}) {
       for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         Polygon polygon;
         try {
@@ -143,7 +143,7 @@ TEST(SmallPath, AgreesWithTheGeneralEngine) {
   general.threads = 1;
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 100u, 128u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
