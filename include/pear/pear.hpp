@@ -160,25 +160,15 @@ class PEAR_API Triangulator {
     return result;
   }
 
-  /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
-  template <ring_range Rings>
-  EarStatistics ear_statistics(const Rings& rings) {
-    detail::FlatPolygon& flat = input_buffer();
-    if (!detail::flatten(rings, flat)) return {};
-    return run_statistics(PolygonView{flat.points, flat.ring_starts});
-  }
-
- private:
-  detail::FlatPolygon& input_buffer();
-  std::vector<std::array<std::uint32_t, 3>>& triangle_buffer();
-  Status run(const PolygonView& polygon, const Options& options,
-             std::vector<std::array<std::uint32_t, 3>>& triangles,
-             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
-  EarStatistics run_statistics(const PolygonView& polygon);
-
-  template <class Index>
+  /// Triangulates into `result`, reusing its buffers: a loop over many small polygons then
+  /// allocates nothing once they have grown. Its previous contents are replaced.
+  template <class Index = std::uint32_t>
   void triangulate_into(const PolygonView& polygon, const Options& options,
                         Triangulation<Index>& result) {
+    result.triangles.clear();
+    result.diagnostics.clear();
+    result.delaunay = {};
+    result.status = Status::ok;
     const std::size_t count = polygon.points.size();
     if (count > 0 && count - 1 > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
       result.status = Status::index_overflow;
@@ -195,6 +185,22 @@ class PEAR_API Triangulator {
         for (int k = 0; k < 3; ++k) result.triangles[t][k] = static_cast<Index>(wide[t][k]);
     }
   }
+
+  /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
+  template <ring_range Rings>
+  EarStatistics ear_statistics(const Rings& rings) {
+    detail::FlatPolygon& flat = input_buffer();
+    if (!detail::flatten(rings, flat)) return {};
+    return run_statistics(PolygonView{flat.points, flat.ring_starts});
+  }
+
+ private:
+  detail::FlatPolygon& input_buffer();
+  std::vector<std::array<std::uint32_t, 3>>& triangle_buffer();
+  Status run(const PolygonView& polygon, const Options& options,
+             std::vector<std::array<std::uint32_t, 3>>& triangles,
+             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  EarStatistics run_statistics(const PolygonView& polygon);
 
   std::unique_ptr<detail::Engine> engine_;      ///< from a pool, on first use
   std::unique_ptr<Executor> private_executor_;  ///< for Options::threads without an executor

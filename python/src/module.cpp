@@ -17,27 +17,33 @@ namespace {
 /// releasing and taking the lock back costs more than another thread could gain.
 constexpr std::size_t release_gil_points = 256;
 
-/// A thread's engine and input buffers, kept between calls: a small polygon then costs no
-/// allocation but its result.
+/// A thread's engine, input and result buffers, kept between calls: a small polygon then costs
+/// no allocation but its result's array.
 struct Scratch {
   Triangulator triangulator;
   std::vector<Point> points;
   std::vector<std::uint32_t> ring_offsets;
+  Triangulation<> result;
 };
 Scratch& thread_scratch() {
   thread_local Scratch scratch;
   return scratch;
 }
 
-Triangulation<> run(Scratch& s, const Options& options) {
+Triangulation<>& run(Scratch& s, const Options& options) {
   const PolygonView view{s.points, s.ring_offsets};
-  if (s.points.size() < release_gil_points) return s.triangulator.triangulate(view, options);
-  py::gil_scoped_release release;
-  return s.triangulator.triangulate(view, options);
+  if (s.points.size() < release_gil_points) {
+    s.triangulator.triangulate_into(view, options, s.result);
+  } else {
+    py::gil_scoped_release release;
+    s.triangulator.triangulate_into(view, options, s.result);
+  }
+  return s.result;
 }
 
-/// The result as pear.triangulate returns it, or the exception it raises.
-py::object finish(Triangulation<>&& result, bool strict, const std::string& where = {}) {
+/// The result as pear.triangulate returns it, or the exception it raises. Large triangle
+/// lists are moved into the array, small ones copied (the buffer stays for the next call).
+py::object finish(Triangulation<>& result, bool strict, const std::string& where = {}) {
   py::object triangles = triangles_array(std::move(result.triangles));
   if (result.status == Status::invalid_input || result.status == Status::index_overflow ||
       (result.status == Status::not_simple && strict))
@@ -63,17 +69,17 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
     s.ring_offsets.clear();
     for (std::int64_t r = first_ring; r <= end_ring; ++r)
       s.ring_offsets.push_back(static_cast<std::uint32_t>(flat.ring_offsets[r] - first));
-    Triangulation<> part = run(s, options);
+    const Triangulation<>& part = run(s, options);
     const auto base = static_cast<std::uint32_t>(first);
     for (const auto& t : part.triangles)
       all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
     if (part.status > all.status) {
       all.status = part.status;
-      all.diagnostics = std::move(part.diagnostics);
+      all.diagnostics = part.diagnostics;
       where = parts > 1 ? "polygon " + std::to_string(p) + " of the MultiPolygon, " : "";
     }
   }
-  return finish(std::move(all), strict, where);
+  return finish(all, strict, where);
 }
 
 py::object triangulate(py::handle coords, py::handle ring_ends, const Options& options,

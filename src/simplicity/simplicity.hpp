@@ -155,7 +155,7 @@ class SimplicityCheck {
                                    Method method = Method::automatic);
 
   /// For small polygons (up to a few hundred edges), sequentially: every pair of one ring of at
-  /// most 64 edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
+  /// most 128 edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
   /// conflict, so the violation is the one find_violation reports; `find_crossings` false only
   /// looks for touching (no orientation tests), for runs that skip the check.
   SmallVerdict check_small(const CleanPolygon& polygon, bool find_crossings);
@@ -178,10 +178,10 @@ class SimplicityCheck {
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
 
-  /// check_small's edge boxes of one ring of at most 64 edges, a column per side: the pair
+  /// check_small's edge boxes of one ring of at most 128 edges, a column per side: the pair
   /// tests then compare two boxes per instruction.
   struct BoxColumns {
-    static constexpr std::uint32_t capacity = 64;
+    static constexpr std::uint32_t capacity = 128;
     std::array<double, capacity> x0, y0, x1, y1;
   };
   BoxColumns columns_;

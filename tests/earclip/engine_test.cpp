@@ -247,6 +247,36 @@ TEST(EngineInput, TriangulatorIsReusable) {
   }
 }
 
+/// triangulate_into replaces the result it is given: after a polygon with warnings and many
+/// triangles, an error, then a square, nothing of the earlier calls is left.
+TEST(EngineInput, TriangulateIntoReplacesTheResult) {
+  Triangulator triangulator;
+  Triangulation<> result;
+  const std::vector<Point> spiky = {{0, 0}, {4, 0}, {4, 4}, {2, 4}, {2, 6}, {2, 4}, {0, 4}};
+  const std::vector<std::uint32_t> one_ring = {0, 7};
+  triangulator.triangulate_into(PolygonView{spiky, one_ring}, {}, result);
+  ASSERT_EQ(result.status, Status::ok);
+  // The spike to (2, 6) is dissolved, with a warning; 5 vertices are left (one collinear).
+  EXPECT_EQ(result.triangles.size(), 3u);
+  ASSERT_FALSE(result.diagnostics.empty());
+  const std::vector<Point> bad = {{0, 0}, {NAN, 0}, {1, 1}};
+  const std::vector<std::uint32_t> three = {0, 3};
+  triangulator.triangulate_into(PolygonView{bad, three}, {}, result);
+  EXPECT_EQ(result.status, Status::invalid_input);
+  EXPECT_TRUE(result.triangles.empty());
+  ASSERT_EQ(result.diagnostics.size(), 1u);
+  EXPECT_EQ(result.diagnostics[0].issue, Issue::non_finite_coordinate);
+  const std::vector<Point> square = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  const std::vector<std::uint32_t> four = {0, 4};
+  Options delaunay;
+  delaunay.delaunay = true;
+  triangulator.triangulate_into(PolygonView{square, four}, delaunay, result);
+  EXPECT_EQ(result.status, Status::ok);
+  EXPECT_EQ(result.triangles.size(), 2u);
+  EXPECT_TRUE(result.diagnostics.empty());
+  EXPECT_TRUE(validate(Polygon{square}, result.triangles).valid);
+}
+
 TEST(EngineStatistics, ConvexPolygonIsAllEars) {
   Ring hexagon;
   for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)});
