@@ -32,6 +32,11 @@ std::int64_t top_key(const Point& a, const Point& c, double before, double after
   return diagonal > 0 && sides < INFINITY ? key : std::numeric_limits<std::int64_t>::max();
 }
 
+/// Node v's bit in word w of a NodeSet, 0 when v lies in another word.
+std::uint64_t bit_in_word(std::uint32_t v, std::uint32_t w) {
+  return v / 64 == w ? std::uint64_t{1} << (v % 64) : 0;
+}
+
 }  // namespace
 
 void SmallClipper::Slabs::build(std::span<const Point> points, double Point::*axis,
@@ -50,6 +55,22 @@ void SmallClipper::Slabs::build(std::span<const Point> points, double Point::*ax
   }
 }
 
+/// shared_ marks every node whose position another node has: sorted by position, equal
+/// neighbours in the order.
+void SmallClipper::mark_repeated_positions() {
+  const auto n = static_cast<std::uint32_t>(b_.pos.size());
+  order_.resize(n);
+  for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
+  std::sort(order_.begin(), order_.end(), [&](std::uint32_t u, std::uint32_t w) {
+    return lexicographic_less(b_.pos[u], b_.pos[w]);
+  });
+  for (std::uint32_t k = 0; k + 1 < n; ++k) {
+    if (!(b_.pos[order_[k]] == b_.pos[order_[k + 1]])) continue;
+    shared_.add(order_[k]);
+    shared_.add(order_[k + 1]);
+  }
+}
+
 void SmallClipper::load(std::span<const Point> points, std::span<const std::uint32_t> original) {
   const auto n = static_cast<std::uint32_t>(points.size());
   b_.pos.assign(points.begin(), points.end());
@@ -63,6 +84,7 @@ void SmallClipper::load(std::span<const Point> points, std::span<const std::uint
   reflex_.words.fill(0);
   convex_.words.fill(0);
   candidates_.words.fill(0);
+  shared_.words.fill(0);
   for (std::uint32_t i = 0; i < n; ++i) {
     b_.prev[i] = i == 0 ? n - 1 : i - 1;
     b_.next[i] = i + 1 == n ? 0 : i + 1;
@@ -111,18 +133,17 @@ bool SmallClipper::is_ear(std::uint32_t v) const {
   const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
   const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
   const Point* pos = b_.pos.data();
-  NodeSet others = reflex_;  // the ear's own corners cannot block it
-  others.erase(p);
-  others.erase(n);
-  if (slabbed_) {
-    const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
-    const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
-    for (std::uint32_t w = 0; w < words_; ++w)
-      others.words[w] &= xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
-                         ys_.from[sy0].words[w];
-  }
+  std::uint32_t sx0 = 0, sx1 = 0, sy0 = 0, sy1 = 0;
+  if (slabbed_) sx0 = xs_.slab(x0), sx1 = xs_.slab(x1), sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
   for (std::uint32_t w = 0; w < words_; ++w) {
-    for (std::uint64_t set = others.words[w]; set != 0; set &= set - 1) {
+    // The ear's own corners cannot block it; nodes at a repeated position may, whatever
+    // their angle.
+    std::uint64_t near = (reflex_.words[w] | shared_.words[w]) &
+                         ~(bit_in_word(p, w) | bit_in_word(v, w) | bit_in_word(n, w));
+    if (slabbed_)
+      near &= xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
+              ys_.from[sy0].words[w];
+    for (std::uint64_t set = near; set != 0; set &= set - 1) {
       const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
       const Point& x = pos[q];
       if (!((x.x >= x0) & (x.x <= x1) & (x.y >= y0) & (x.y <= y1))) continue;
@@ -228,11 +249,12 @@ bool SmallClipper::finish(TriangleList& out) {
 }
 
 bool SmallClipper::run(std::span<const Point> points, std::span<const std::uint32_t> original,
-                       EarHeuristic heuristic, TriangleList& out) {
+                       EarHeuristic heuristic, TriangleList& out, bool repeated) {
   if (points.size() < 3 || points.size() > max_nodes) return false;
   const std::size_t before = out.size();
   keyed_ = heuristic == EarHeuristic::top;
   load(points, original);
+  if (repeated) mark_repeated_positions();
   const bool done = keyed_ ? clip_by_key(out) : clip_by_walk(out);
   if (!done) out.resize(before);
   return done;

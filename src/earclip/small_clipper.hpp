@@ -1,12 +1,12 @@
-// Ear clipping for small polygons: one ring of at most 384 vertices, simple, no position
-// twice (the pipeline checks this first). The same ear test as the general clipper
-// (ear_test.hpp's blocks()), but the strictly reflex, convex and candidate nodes are bit sets,
-// the next ear is the candidate with the smallest key (a scan of the set), and the key is read
-// from the bits of the doubles instead of computed with roots: no grid, bucket queue or pinch
-// table to set up. Past 64 nodes, slabs narrow the ear test to reflex nodes near the ear and
-// the scan to the words that changed; each step still scans, so the cost per vertex grows with
-// n: at about 512 vertices the general clipper is as fast (bench_small's crossover;
-// docs/engine.md).
+// Ear clipping for small polygons: one ring of at most 384 nodes, simple (the pipeline checks
+// this first), or the boundary of a polygon with holes joined by bridges, whose bridge ends
+// repeat positions. The same ear test as the general clipper (ear_test.hpp's blocks()), but
+// the strictly reflex, convex and candidate nodes are bit sets, the next ear is the candidate
+// with the smallest key (a scan of the set), and the key is read from the bits of the doubles
+// instead of computed with roots: no grid, bucket queue or pinch table to set up. Past 64
+// nodes, slabs narrow the ear test to reflex nodes near the ear and the scan to the words that
+// changed; each step still scans, so the cost per vertex grows with n: at about 512 vertices
+// the general clipper is as fast (bench_small's crossover; docs/engine.md).
 #pragma once
 
 #include <array>
@@ -25,14 +25,17 @@ class SmallClipper {
   static constexpr std::size_t max_words = max_nodes / 64;
 
   /// Clips the counterclockwise ring `points` (original[i]: the caller's index of point i; at
-  /// most max_nodes), appending its n - 2 triangles to `out`. Returns false, with `out` as it
-  /// was, when it finds no ear: the ring was not simple after all (the caller skipped the
-  /// check), and the general engine, with its fallbacks, must take it.
+  /// most max_nodes), appending its n - 2 triangles to `out`. `repeated` says that positions
+  /// may repeat (bridge ends): those nodes then take part in every ear test whatever their
+  /// angle, as the general clipper's pinches do. Returns false, with `out` as it was, when it
+  /// finds no ear: the ring was not simple after all (the caller skipped the check), and the
+  /// general engine, with its fallbacks, must take it.
   bool run(std::span<const Point> points, std::span<const std::uint32_t> original,
-           EarHeuristic heuristic, TriangleList& out);
+           EarHeuristic heuristic, TriangleList& out, bool repeated = false);
 
  private:
   void load(std::span<const Point> points, std::span<const std::uint32_t> original);
+  void mark_repeated_positions();
   bool is_ear(std::uint32_t v) const;
   void clip(std::uint32_t v, TriangleList& out);
   void refresh(std::uint32_t v);
@@ -69,6 +72,7 @@ class SmallClipper {
   std::vector<std::int64_t> key_;  ///< `top`'s order of each convex node (smaller first)
   std::vector<double> side_;       ///< squared length of the edge from each node (`top`)
   NodeSet reflex_;                 ///< strictly reflex nodes still on the boundary
+  NodeSet shared_;                 ///< nodes whose position another node has (bridge ends)
   NodeSet convex_;                 ///< strictly convex nodes still on the boundary
   NodeSet candidates_;             ///< convex nodes not found blocked since they last changed
   /// Each word's candidate with the smallest key (UINT32_MAX: none), found again only for the
@@ -76,9 +80,10 @@ class SmallClipper {
   std::array<std::uint32_t, max_words> word_best_;
   std::uint32_t stale_words_ = 0;
   Slabs xs_, ys_;
-  bool slabbed_ = false;     ///< whether xs_ and ys_ are built (more than one word)
-  bool keyed_ = true;        ///< whether key_ is kept (`top`)
-  std::uint32_t words_ = 0;  ///< words of the sets in use
+  bool slabbed_ = false;              ///< whether xs_ and ys_ are built (more than one word)
+  bool keyed_ = true;                 ///< whether key_ is kept (`top`)
+  std::uint32_t words_ = 0;           ///< words of the sets in use
+  std::vector<std::uint32_t> order_;  ///< scratch: nodes by position
   std::uint32_t remaining_ = 0;
   std::uint32_t anchor_ = 0;  ///< a live node
 };

@@ -103,15 +103,7 @@ bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunC
   std::vector<std::uint32_t> unjoined;
   std::uint32_t overlapping = UINT32_MAX;
   ctx.run_serial("bridge holes", [&] {
-    boundary_.clear();
-    for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
-      const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
-      for (std::uint32_t i = first; i <= last; ++i)
-        boundary_.add(clean_.points[i], clean_.original[i]);
-      for (std::uint32_t i = first; i < last; ++i) boundary_.link(i, i + 1);
-      boundary_.link(last, first);
-    }
-    unjoined = bridger_.join(clean_, boundary_);
+    unjoined = bridge_holes();
     overlapping = touching_.untangle(boundary_);
     cycles_ = touching_.cycles(boundary_, 0, unjoined);
   });
@@ -178,12 +170,39 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   return complete;
 }
 
+std::vector<std::uint32_t> Engine::bridge_holes() {
+  boundary_.clear();
+  for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
+    const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
+    for (std::uint32_t i = first; i <= last; ++i)
+      boundary_.add(clean_.points[i], clean_.original[i]);
+    for (std::uint32_t i = first; i < last; ++i) boundary_.link(i, i + 1);
+    boundary_.link(last, first);
+  }
+  return bridger_.join(clean_, boundary_);
+}
+
 bool Engine::triangulate_small(const Options& options, TriangleList& out) {
   const SmallVerdict verdict = simplicity_.check_small(clean_, options.check_simplicity);
   // A violation is reported by the general path, which also gives the best effort.
   if (verdict.touching || verdict.violation) return false;
-  out.reserve(clean_.points.size() - 2);
-  return small_.run(clean_.points, clean_.original, options.heuristic, out);
+  const std::size_t holes = clean_.ring_count() - 1;
+  out.reserve(clean_.points.size() + 2 * holes - 2);
+  if (holes == 0) return small_.run(clean_.points, clean_.original, options.heuristic, out);
+  // Holes: each must lie in the outer ring and in no other hole (else the general path names
+  // it), and be joined by a bridge; the joined boundary is then clipped as one ring.
+  if (options.check_simplicity && find_misplaced_hole_among_few(clean_)) return false;
+  if (!bridge_holes().empty()) return false;
+  ring_points_.clear();
+  ring_original_.clear();
+  std::uint32_t v = 0;
+  do {
+    ring_points_.push_back(boundary_.pos[v]);
+    ring_original_.push_back(boundary_.vertex[v]);
+    v = boundary_.next[v];
+  } while (v != 0 && ring_points_.size() < boundary_.size());
+  if (ring_points_.size() != boundary_.size()) return false;
+  return small_.run(ring_points_, ring_original_, options.heuristic, out, true);
 }
 
 Status Engine::triangulate(const PolygonView& input, const Options& options, ExecutorChoice& where,
@@ -200,8 +219,9 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
   ctx.run_serial("clean", [&] { status = clean_polygon(input, clean_, diagnostics); });
   if (status != Status::ok) return status;
   bool small = false;
-  if (sequential(options.algorithm) && clean_.ring_count() == 1 &&
-      clean_.points.size() <= small_limit)
+  // Bridges add two nodes per hole.
+  if (sequential(options.algorithm) &&
+      clean_.points.size() + 2 * (clean_.ring_count() - 1) <= small_limit)
     ctx.run_serial("clip small polygon", [&] { small = triangulate_small(options, out); });
   if (small) {
     if (options.delaunay) make_delaunay(input.points, clean_, out, ctx, delaunay);

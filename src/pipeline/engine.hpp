@@ -50,9 +50,13 @@ class Engine {
   std::size_t footprint() const { return clean_.points.capacity() + boundary_.pos.capacity(); }
 
  private:
-  /// The small-polygon path: one ring, no repeated position, few vertices. Returns false when
-  /// it does not apply or finds the ring not simple; the general path then runs.
+  /// The small-polygon path: few vertices, no repeated position; holes are bridged first.
+  /// Returns false when it does not apply or finds the polygon not valid; the general path
+  /// then runs (and names what is wrong).
   bool triangulate_small(const Options& options, TriangleList& out);
+  /// boundary_ from clean_'s rings, the holes joined by bridges; returns the leftmost node of
+  /// every hole that could not be joined.
+  std::vector<std::uint32_t> bridge_holes();
   /// Cleans and bridges; returns false when nothing can be triangulated.
   bool prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                std::vector<Diagnostic>& diagnostics, Status& status);
@@ -86,6 +90,8 @@ class Engine {
   Boundary part_;                      ///< a region copied out of boundary_
   EarClipper clipper_;
   SmallClipper small_;
+  std::vector<Point> ring_points_;  ///< the bridged boundary as one ring, for small_
+  std::vector<std::uint32_t> ring_original_;
 };
 
 }  // namespace pear::detail

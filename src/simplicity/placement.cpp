@@ -11,6 +11,14 @@
 namespace pear::detail {
 namespace {
 
+/// Whether edge a-b crosses the ray from p to the right (p on no edge): the lower end counts
+/// as in, the upper as out, and the side is an exact orientation.
+bool crosses_ray_right(const Point& a, const Point& b, const Point& p) {
+  if ((a.y <= p.y) == (b.y <= p.y)) return false;
+  const double side = orient2d(a, b, p);
+  return a.y < b.y ? side > 0 : side < 0;
+}
+
 /// Horizontal bands of the edges' y-ranges, each edge listed in every band it meets, so that a
 /// ray needs only its band's edges. Fewer bands where edges are tall against their spacing:
 /// the entries stay under 8 per edge.
@@ -52,10 +60,7 @@ class Bands {
     const int r = frame_.row(p.y);
     for (std::uint32_t k = start_[r]; k < start_[r + 1]; ++k) {
       const std::uint32_t e = edges_[k];
-      const Point &a = polygon_.points[e], &b = polygon_.points[next_[e]];
-      if ((a.y <= p.y) == (b.y <= p.y)) continue;
-      const double side = orient2d(a, b, p);
-      if (!(a.y < b.y ? side > 0 : side < 0)) continue;
+      if (!crosses_ray_right(polygon_.points[e], polygon_.points[next_[e]], p)) continue;
       if (parity[ring_[e]] == 0 && (rings.empty() || rings.back() != ring_[e]))
         rings.push_back(ring_[e]);
       parity[ring_[e]] ^= 1;
@@ -122,6 +127,26 @@ std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon) {
     for (std::uint32_t r : around) {
       if (parity[r] && r != hole) (r == 0 ? in_outer : in_hole) = true;
       parity[r] = 0;
+    }
+    if (!in_outer) return MisplacedHole{vertex, true};
+    if (in_hole) return MisplacedHole{vertex, false};
+  }
+  return std::nullopt;
+}
+
+std::optional<MisplacedHole> find_misplaced_hole_among_few(const CleanPolygon& polygon) {
+  const std::size_t rings = polygon.ring_count();
+  const auto& pts = polygon.points;
+  for (std::uint32_t hole = 1; hole < rings; ++hole) {
+    const std::uint32_t vertex = polygon.ring_starts[hole];
+    bool in_outer = false, in_hole = false;
+    for (std::uint32_t r = 0; r < rings; ++r) {
+      if (r == hole) continue;
+      const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
+      bool inside = false;
+      for (std::uint32_t e = first; e < end; ++e)
+        inside ^= crosses_ray_right(pts[e], pts[e + 1 == end ? first : e + 1], pts[vertex]);
+      (r == 0 ? in_outer : in_hole) |= inside;
     }
     if (!in_outer) return MisplacedHole{vertex, true};
     if (in_hole) return MisplacedHole{vertex, false};

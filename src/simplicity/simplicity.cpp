@@ -218,41 +218,52 @@ void visit_pair(const RingEdges& edges, std::uint32_t e, std::uint32_t f, bool f
 
 }  // namespace
 
-SmallVerdict SimplicityCheck::check_one_small_ring(const CleanPolygon& polygon,
-                                                   bool find_crossings) {
+SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   const auto& pts = polygon.points;
   BoxColumns& c = columns_;
-  for (std::uint32_t e = 0; e < n; ++e) {
-    const Point &a = pts[e], &b = pts[e + 1 == n ? 0 : e + 1];
-    c.x0[e] = std::min(a.x, b.x), c.y0[e] = std::min(a.y, b.y);
-    c.x1[e] = std::max(a.x, b.x), c.y1[e] = std::max(a.y, b.y);
+  edges_.points = &pts;
+  edges_.next.resize(n);
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
+    for (std::uint32_t e = first; e < end; ++e) {
+      const std::uint32_t f = e + 1 == end ? first : e + 1;
+      edges_.next[e] = f;
+      const Point &a = pts[e], &b = pts[f];
+      c.x0[e] = std::min(a.x, b.x), c.y0[e] = std::min(a.y, b.y);
+      c.x1[e] = std::max(a.x, b.x), c.y1[e] = std::max(a.y, b.y);
+    }
   }
-  // Every pair of edges that are not neighbours (e's are e +- 1, and 0 and n - 1: the bounds
-  // leave them out). Neighbours conflict only by folding back at their shared vertex, and
-  // clean_polygon leaves no such tip. A row is looked at again only when a box meets (2% of
-  // the rows of the counties); the ring's edges are indexed for the exact tests only then.
+  // Every pair of edges that are not neighbours: edge e of ring [first, end) meets the edges
+  // after it but e + 1 (unless e ends the ring) and, for e == first, end - 1. Neighbours
+  // conflict only by folding back at their shared vertex, and clean_polygon leaves no such tip.
+  // A row is looked at again only when a box meets (2% of the rows of the counties); the
+  // boxes are copied for the exact tests only then.
   SmallVerdict verdict;
   std::uint32_t smallest = SmallestViolation::none;
   bool indexed = false;
-  for (std::uint32_t e = 0; e + 2 < n; ++e) {
-    const std::uint32_t first = e + 2, end = e == 0 ? n - 1 : n;
+  std::size_t ring = 0;
+  for (std::uint32_t e = 0; e + 1 < n; ++e) {
+    if (e == polygon.ring_starts[ring + 1]) ++ring;
+    const std::uint32_t first = polygon.ring_starts[ring], end = polygon.ring_starts[ring + 1];
+    const std::uint32_t start = e + 1 == end ? e + 1 : e + 2;
+    const std::pair<std::uint32_t, std::uint32_t> ranges[2] = {{start, e == first ? end - 1 : n},
+                                                               {e == first ? end : n, n}};
     const Box box = {c.x0[e], c.y0[e], c.x1[e], c.y1[e]};
-    if (!any_box_meets(c.x0.data(), c.y0.data(), c.x1.data(), c.y1.data(), first, end, box))
-      continue;
+    bool meets = false;
+    for (const auto& [from, to] : ranges)
+      meets |= from < to &&
+               any_box_meets(c.x0.data(), c.y0.data(), c.x1.data(), c.y1.data(), from, to, box);
+    if (!meets) continue;
     if (!indexed) {
-      edges_.points = &pts;
-      edges_.next.resize(n);
       edges_.boxes.resize(n);
-      for (std::uint32_t i = 0; i < n; ++i) {
-        edges_.next[i] = i + 1 == n ? 0 : i + 1;
-        edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
-      }
+      for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
       indexed = true;
     }
-    for (std::uint32_t f = first; f < end; ++f)
-      if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
-        visit_pair(edges_, e, f, find_crossings, smallest, verdict);
+    for (const auto& [from, to] : ranges)
+      for (std::uint32_t f = from; f < to; ++f)
+        if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
+          visit_pair(edges_, e, f, find_crossings, smallest, verdict);
   }
   if (smallest != SmallestViolation::none) verdict.violation = smallest;
   return verdict;
@@ -260,8 +271,7 @@ SmallVerdict SimplicityCheck::check_one_small_ring(const CleanPolygon& polygon,
 
 SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  if (polygon.ring_count() == 1 && n <= BoxColumns::capacity)
-    return check_one_small_ring(polygon, find_crossings);
+  if (n <= BoxColumns::capacity) return check_few_edges(polygon, find_crossings);
   SmallVerdict verdict;
   const auto& pts = polygon.points;
   edges_.points = &pts;

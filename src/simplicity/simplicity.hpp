@@ -125,6 +125,10 @@ struct MisplacedHole {
 /// linear for real data (a ray per hole through horizontal bands of the edges). For polygons
 /// the engine could not triangulate, to name why.
 std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon);
+/// find_misplaced_hole for rings that share no vertex position and whose edges do not conflict
+/// (check_small found none touching): a ray from each hole's first vertex against every edge
+/// of the other rings, nothing to set up. For small polygons: holes times vertices tests.
+std::optional<MisplacedHole> find_misplaced_hole_among_few(const CleanPolygon& polygon);
 
 /// What the small check (SimplicityCheck::check_small) found.
 struct SmallVerdict {
@@ -154,8 +158,8 @@ class SimplicityCheck {
   TJunctionSearch find_t_junctions(const CleanPolygon& polygon, const RunContext& ctx,
                                    Method method = Method::automatic);
 
-  /// For small polygons (up to a few hundred edges), sequentially: every pair of one ring of at
-  /// most 128 edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
+  /// For small polygons (up to a few hundred edges), sequentially: every pair of at most 128
+  /// edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
   /// conflict, so the violation is the one find_violation reports; `find_crossings` false only
   /// looks for touching (no orientation tests), for runs that skip the check.
   SmallVerdict check_small(const CleanPolygon& polygon, bool find_crossings);
@@ -178,15 +182,15 @@ class SimplicityCheck {
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
 
-  /// check_small's edge boxes of one ring of at most 128 edges, a column per side: the pair
+  /// check_small's edge boxes of rings of at most 128 edges in all, a column per side: the pair
   /// tests then compare two boxes per instruction.
   struct BoxColumns {
     static constexpr std::uint32_t capacity = 128;
     std::array<double, capacity> x0, y0, x1, y1;
   };
   BoxColumns columns_;
-  /// check_small for one ring of at most BoxColumns::capacity edges.
-  SmallVerdict check_one_small_ring(const CleanPolygon& polygon, bool find_crossings);
+  /// check_small for rings of at most BoxColumns::capacity edges in all.
+  SmallVerdict check_few_edges(const CleanPolygon& polygon, bool find_crossings);
 };
 
 }  // namespace pear::detail

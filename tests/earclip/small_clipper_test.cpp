@@ -6,6 +6,7 @@
 // or leave a result (the check, which the pipeline runs first, is what promises validity).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 #include <string>
 
@@ -132,18 +133,56 @@ TEST(SmallClipper, RingsThatAreNotSimpleEndAndLeaveOutputAloneWhenRefused) {
   EXPECT_GT(refused, 0);
 }
 
-/// The pipeline's choice: one ring up to the limit goes the small way; the general engine
-/// (forced by partition-and-cut with one partition) must agree on status and count, and both
-/// results must be valid, on the county-like sizes.
-TEST(SmallPath, AgreesWithTheGeneralEngine) {
-  Triangulator triangulator;
+std::size_t polygon_size(const Polygon& polygon) {
+  std::size_t n = 0;
+  for (const Ring& ring : polygon) n += ring.size();
+  return n;
+}
+
+/// The general engine: partition-and-cut with one partition.
+Options general_engine(EarHeuristic heuristic) {
   Options general;
   general.algorithm = Algorithm::partition_and_cut;
   general.partitions = 1;
   general.threads = 1;
+  general.heuristic = heuristic;
+  return general;
+}
+
+/// The pipeline's choice against the general engine, with both heuristics: the same status
+/// (ok) and count, both results valid, `top`'s angles within 10% (the same order up to the
+/// general queue's buckets). Up to the small path's limit (its vertices and two per hole) it
+/// did the work: the general path's phases are absent.
+void expect_small_path_agrees(Triangulator& triangulator, const Polygon& polygon) {
+  for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
+    Options small;
+    small.heuristic = h;
+    small.threads = 1;
+    RunProfile profile;
+    small.profile = &profile;
+    const auto a = triangulator.triangulate(polygon, small);
+    const auto b = triangulator.triangulate(polygon, general_engine(h));
+    ASSERT_EQ(a.status, Status::ok);
+    ASSERT_EQ(b.status, Status::ok);
+    const bool general_ran = std::any_of(profile.phases.begin(), profile.phases.end(),
+                                         [](const auto& p) { return p.name == "bridge holes"; });
+    EXPECT_EQ(general_ran,
+              polygon_size(polygon) + 2 * (polygon.size() - 1) > SmallClipper::max_nodes);
+    EXPECT_EQ(a.triangles.size(), b.triangles.size());
+    EXPECT_TRUE(validate(polygon, a.triangles).valid);
+    EXPECT_TRUE(validate(polygon, b.triangles).valid);
+    if (h == EarHeuristic::top)
+      EXPECT_GT(quality(polygon, a.triangles).min_angle_avg_deg,
+                0.9 * quality(polygon, b.triangles).min_angle_avg_deg);
+  }
+}
+
+/// One ring, county-like sizes up to the limit and past it.
+TEST(SmallPath, AgreesWithTheGeneralEngine) {
+  Triangulator triangulator;
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u, 500u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
@@ -151,28 +190,76 @@ TEST(SmallPath, AgreesWithTheGeneralEngine) {
         continue;
       }
       SCOPED_TRACE(std::string(kind) + " " + std::to_string(n));
-      for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
-        Options small;
-        small.heuristic = general.heuristic = h;
-        small.threads = 1;
-        const auto a = triangulator.triangulate(polygon, small);
-        const auto b = triangulator.triangulate(polygon, general);
-        ASSERT_EQ(a.status, Status::ok);
-        ASSERT_EQ(b.status, Status::ok);
-        EXPECT_EQ(a.triangles.size(), b.triangles.size());
-        EXPECT_TRUE(validate(polygon, a.triangles).valid);
-        EXPECT_TRUE(validate(polygon, b.triangles).valid);
-        if (h == EarHeuristic::top) {
-          // The same order up to the general queue's buckets: angles within a few percent.
-          const double qa = quality(polygon, a.triangles).min_angle_avg_deg;
-          const double qb = quality(polygon, b.triangles).min_angle_avg_deg;
-          EXPECT_GT(qa, 0.9 * qb);
+      expect_small_path_agrees(triangulator, polygon);
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 10);
+}
+
+/// Polygons with holes: bridged, then clipped as one ring with repeated bridge ends.
+TEST(SmallPath, HolesAgreeWithTheGeneralEngine) {
+  Triangulator triangulator;
+  int compared = 0;
+  for (std::string_view kind : {"holes", "random-holes"}) {
+    for (std::size_t n : {12u, 20u, 40u, 80u, 150u, 300u}) {
+      for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        Polygon polygon;
+        try {
+          polygon = generate_polygon(kind, n, seed);
+        } catch (const std::invalid_argument&) {
+          continue;
         }
+        if (polygon.size() < 2) continue;
+        SCOPED_TRACE(std::string(kind) + " " + std::to_string(n) + " seed " + std::to_string(seed));
+        expect_small_path_agrees(triangulator, polygon);
         ++compared;
       }
     }
   }
-  EXPECT_GT(compared, 20);
+  EXPECT_GT(compared, 10);
+}
+
+/// Holes where a hole may not be, and holes whose bridges share an outer vertex, through the
+/// small path: the same statuses and diagnostics as the general engine's.
+TEST(SmallPath, MisplacedAndCrowdedHoles) {
+  const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+  const Ring hole{{2, 2}, {2, 8}, {8, 8}, {8, 2}};
+  const Ring inner{{4, 4}, {4, 6}, {6, 6}, {6, 4}};
+  const Ring beside{{12, 2}, {12, 8}, {18, 8}, {18, 2}};
+  struct Case {
+    const char* name;
+    Polygon polygon;
+    Status status;
+    Issue issue;
+    std::size_t ring;
+  };
+  const Case cases[] = {
+      {"hole in a hole", {square, hole, inner}, Status::not_simple, Issue::hole_inside_hole, 2},
+      {"hole beside the outer ring",
+       {square, beside},
+       Status::not_simple,
+       Issue::hole_outside_outer_ring,
+       1},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.name);
+    const auto small = triangulate(c.polygon);
+    const auto reference = triangulate(c.polygon, general_engine(EarHeuristic::top));
+    EXPECT_EQ(small.status, c.status);
+    EXPECT_EQ(reference.status, c.status);
+    ASSERT_FALSE(small.diagnostics.empty());
+    EXPECT_EQ(small.diagnostics.back().issue, c.issue);
+    EXPECT_EQ(small.diagnostics.back().ring, c.ring);
+  }
+  // Four triangular holes in a column, each leftmost vertex in sight of the outer ring's left
+  // corner (0, 0): their bridges all end there, so that position repeats five times.
+  Polygon crowded{{{0, 0}, {5, -6}, {10, 0}, {5, 6}}};
+  for (double y : {-1.5, -0.5, 0.5, 1.5}) crowded.push_back({{2, y}, {3, y + 0.25}, {3, y - 0.25}});
+  const auto result = triangulate(crowded);
+  ASSERT_EQ(result.status, Status::ok);
+  EXPECT_EQ(result.triangles.size(), 16u + 2 * 4 - 2);  // n + 2h - 2
+  EXPECT_TRUE(validate(crowded, result.triangles).valid);
 }
 
 }  // namespace

@@ -156,7 +156,7 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
     for (const RunContext& ctx : contexts.list)
       EXPECT_EQ(check.find_violation(polygon, ctx, method), first) << "deterministic";
   }
-  // The small polygons' check sees every pair too (all pairs on one ring of at most 128 edges,
+  // The small polygons' check sees every pair too (all pairs up to 128 edges in all rings,
   // runs monotone in x otherwise), and says whether the rings pass a point twice.
   if (polygon.points.size() <= 1024) {
     const SmallVerdict small = check.check_small(polygon, true);
@@ -173,8 +173,8 @@ TEST(Simplicity, MethodsAgreeWithBruteForce) {
   const Contexts contexts;
   int violations = 0, simple = 0;
   for (int round = 0; round < 4000; ++round) {
-    // One ring in every other round: the small check's all-pairs path; up to 140 vertices in
-    // some, past its limit of 128.
+    // One ring in every other round, up to three otherwise; up to 140 vertices a ring in some,
+    // past the small check's all-pairs limit of 128 edges in all.
     const int rings = round % 2 == 0 ? 1 : 1 + round % 3;
     const int vertices = round % 5 == 0 ? 3 + round % 140 : 3 + round % 7;
     const CleanPolygon polygon = random_polygon(rng, rings, vertices, 3 + round % 6);
