@@ -1,6 +1,7 @@
 #include "simplicity.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <limits>
 
 #include "geometry/box_scan.hpp"
@@ -94,13 +95,8 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
     EdgeBox all = {pts[i * chunk].x, pts[i * chunk].y, pts[i * chunk].x, pts[i * chunk].y};
     for (std::size_t e = i * chunk; e < end; ++e) {
       const Point &a = pts[e], &b = pts[edges_.next[e]];
-      const EdgeBox box = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                           std::max(a.y, b.y)};
-      edges_.boxes[e] = box;
-      if (e < BoxColumns::capacity) {
-        columns_.x0[e] = box.x0, columns_.y0[e] = box.y0;
-        columns_.x1[e] = box.x1, columns_.y1[e] = box.y1;
-      }
+      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                         std::max(a.y, b.y)};
       all = merged(all, edges_.boxes[e]);
     }
     bounds[i] = all;
@@ -237,33 +233,36 @@ SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool 
   // Every pair of edges that are not neighbours: edge e of ring [first, end) meets the edges
   // after it but e + 1 (unless e ends the ring) and, for e == first, end - 1. Neighbours
   // conflict only by folding back at their shared vertex, and clean_polygon leaves no such tip.
-  // A row is looked at again only when a box meets (2% of the rows of the counties); the
-  // boxes are copied for the exact tests only then.
-  SmallVerdict verdict;
-  std::uint32_t smallest = SmallestViolation::none;
-  bool indexed = false;
+  rows_.clear();
   std::size_t ring = 0;
   for (std::uint32_t e = 0; e + 1 < n; ++e) {
     if (e == polygon.ring_starts[ring + 1]) ++ring;
     const std::uint32_t first = polygon.ring_starts[ring], end = polygon.ring_starts[ring + 1];
     const std::uint32_t start = e + 1 == end ? e + 1 : e + 2;
-    const std::pair<std::uint32_t, std::uint32_t> ranges[2] = {{start, e == first ? end - 1 : n},
-                                                               {e == first ? end : n, n}};
-    const Box box = {c.x0[e], c.y0[e], c.x1[e], c.y1[e]};
-    bool meets = false;
-    for (const auto& [from, to] : ranges)
-      meets |= from < to &&
-               any_box_meets(c.x0.data(), c.y0.data(), c.x1.data(), c.y1.data(), from, to, box);
-    if (!meets) continue;
-    if (!indexed) {
-      edges_.boxes.resize(n);
-      for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
-      indexed = true;
+    rows_.push_back({e, start, e == first ? end - 1 : n, e == first ? end : n, n});
+  }
+  std::array<std::uint64_t, BoxColumns::capacity / 64> meets;
+  rows_meeting(c, rows_, meets);
+  // A row is looked at again only when a box meets (2% of the rows of the counties); the boxes
+  // are copied for the exact tests only then.
+  SmallVerdict verdict;
+  std::uint32_t smallest = SmallestViolation::none;
+  bool indexed = false;
+  for (std::uint32_t w = 0; w < meets.size(); ++w) {
+    for (std::uint64_t set = meets[w]; set != 0; set &= set - 1) {
+      const RowRanges& r = rows_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(set))];
+      if (!indexed) {
+        edges_.boxes.resize(n);
+        for (std::uint32_t i = 0; i < n; ++i)
+          edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
+        indexed = true;
+      }
+      const Box box = c.box(r.row);
+      for (const auto& [from, to] : {std::pair(r.from, r.to), std::pair(r.from2, r.to2)})
+        for (std::uint32_t f = from; f < to; ++f)
+          if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
+            visit_pair(edges_, r.row, f, find_crossings, smallest, verdict);
     }
-    for (const auto& [from, to] : ranges)
-      for (std::uint32_t f = from; f < to; ++f)
-        if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
-          visit_pair(edges_, e, f, find_crossings, smallest, verdict);
   }
   if (smallest != SmallestViolation::none) verdict.violation = smallest;
   return verdict;

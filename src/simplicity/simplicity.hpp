@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "core/stage.hpp"
+#include "geometry/box_scan.hpp"
 #include "geometry/uniform_grid.hpp"
 
 namespace pear::detail {
@@ -182,13 +183,10 @@ class SimplicityCheck {
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
 
-  /// check_small's edge boxes of rings of at most 128 edges in all, a column per side: the pair
-  /// tests then compare two boxes per instruction.
-  struct BoxColumns {
-    static constexpr std::uint32_t capacity = 128;
-    std::array<double, capacity> x0, y0, x1, y1;
-  };
+  /// check_small's edge boxes of rings of at most BoxColumns::capacity edges in all, a column
+  /// per side, and the pairs to test as rows (geometry/box_scan.hpp).
   BoxColumns columns_;
+  std::vector<RowRanges> rows_;
   /// check_small for rings of at most BoxColumns::capacity edges in all.
   SmallVerdict check_few_edges(const CleanPolygon& polygon, bool find_crossings);
 };

@@ -168,6 +168,50 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
   }
 }
 
+/// The small check's box scan (geometry/box_scan.hpp) gives the same rows with AVX2 (where
+/// the processor has it), SSE2 and plain comparisons, and each row's bit says exactly whether a
+/// box in its ranges meets it: ranges of every length from 0 to the capacity, touching boxes,
+/// and coordinates of every magnitude.
+TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<int> coordinate(0, 40), length(0, 6);
+  BoxColumns c;
+  for (int round = 0; round < 300; ++round) {
+    const std::uint32_t n = 1 + static_cast<std::uint32_t>(rng() % BoxColumns::capacity);
+    const double scale = round % 3 == 0 ? 0x1p-180 : round % 3 == 1 ? 1.0 : 0x1p180;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double x = coordinate(rng), y = coordinate(rng);
+      c.x0[i] = x * scale, c.x1[i] = (x + length(rng)) * scale;
+      c.y0[i] = y * scale, c.y1[i] = (y + length(rng)) * scale;
+    }
+    std::vector<RowRanges> rows;
+    for (std::uint32_t k = 0; k < 2 * n; ++k) {
+      const std::uint32_t a = rng() % (n + 1), b = rng() % (n + 1), d = rng() % (n + 1);
+      rows.push_back({static_cast<std::uint32_t>(rng() % n), std::min(a, b), std::max(a, b), d,
+                      k % 4 == 0 ? n : d});
+    }
+    if (rows.size() > BoxColumns::capacity) rows.resize(BoxColumns::capacity);
+    std::array<std::uint64_t, BoxColumns::capacity / 64> best, sse2, scalar;
+    rows_meeting(c, rows, best, BoxScan::best);
+    rows_meeting(c, rows, sse2, BoxScan::sse2);
+    rows_meeting(c, rows, scalar, BoxScan::scalar);
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const RowRanges& r = rows[k];
+      bool expected = false;
+      for (std::uint32_t f = r.from; f < r.to; ++f)
+        expected |= c.x0[f] <= c.x1[r.row] && c.x0[r.row] <= c.x1[f] && c.y0[f] <= c.y1[r.row] &&
+                    c.y0[r.row] <= c.y1[f];
+      for (std::uint32_t f = r.from2; f < r.to2; ++f)
+        expected |= c.x0[f] <= c.x1[r.row] && c.x0[r.row] <= c.x1[f] && c.y0[f] <= c.y1[r.row] &&
+                    c.y0[r.row] <= c.y1[f];
+      SCOPED_TRACE("round " + std::to_string(round) + " row " + std::to_string(k));
+      ASSERT_EQ((best[k / 64] >> (k % 64)) & 1, expected);
+      ASSERT_EQ((sse2[k / 64] >> (k % 64)) & 1, expected);
+      ASSERT_EQ((scalar[k / 64] >> (k % 64)) & 1, expected);
+    }
+  }
+}
+
 TEST(Simplicity, MethodsAgreeWithBruteForce) {
   std::mt19937 rng(12345);
   const Contexts contexts;

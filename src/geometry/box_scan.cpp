@@ -1,0 +1,100 @@
+#include "box_scan.hpp"
+
+#include <algorithm>
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define PEAR_BOX_SCAN_X86 1
+#include <immintrin.h>
+#endif
+
+namespace pear::detail {
+namespace {
+
+bool meets_one(const BoxColumns& c, std::uint32_t f, const Box& b) {
+  return (c.x0[f] <= b.x1) & (b.x0 <= c.x1[f]) & (c.y0[f] <= b.y1) & (b.y0 <= c.y1[f]);
+}
+
+bool scalar_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
+  bool met = false;
+  for (std::uint32_t f = from; f < to; ++f) met |= meets_one(c, f, b);
+  return met;
+}
+
+#if PEAR_BOX_SCAN_X86
+bool sse2_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
+  const __m128d x0 = _mm_set1_pd(b.x0), x1 = _mm_set1_pd(b.x1);
+  const __m128d y0 = _mm_set1_pd(b.y0), y1 = _mm_set1_pd(b.y1);
+  __m128d any = _mm_setzero_pd();
+  std::uint32_t f = from;
+  for (; f + 2 <= to; f += 2) {
+    const __m128d in_x = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&c.x0[f]), x1),
+                                    _mm_cmple_pd(x0, _mm_loadu_pd(&c.x1[f])));
+    const __m128d in_y = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&c.y0[f]), y1),
+                                    _mm_cmple_pd(y0, _mm_loadu_pd(&c.y1[f])));
+    any = _mm_or_pd(any, _mm_and_pd(in_x, in_y));
+  }
+  return (_mm_movemask_pd(any) != 0) | scalar_meets(c, f, to, b);
+}
+
+/// Lanes whose box of columns [f, f + 4) meets the box of sides x0, x1, y0, y1 (broadcast).
+__attribute__((target("avx2"))) inline __m256d avx2_step(const BoxColumns& c, std::uint32_t f,
+                                                         __m256d x0, __m256d y0, __m256d x1,
+                                                         __m256d y1) {
+  const __m256d in_x = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(&c.x0[f]), x1, _CMP_LE_OQ),
+                                     _mm256_cmp_pd(x0, _mm256_loadu_pd(&c.x1[f]), _CMP_LE_OQ));
+  const __m256d in_y = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(&c.y0[f]), y1, _CMP_LE_OQ),
+                                     _mm256_cmp_pd(y0, _mm256_loadu_pd(&c.y1[f]), _CMP_LE_OQ));
+  return _mm256_and_pd(in_x, in_y);
+}
+
+/// Four boxes a step, the lanes past `to` masked off (the columns are padded, so the load stays
+/// inside): no tail loop whose length changes from row to row.
+__attribute__((target("avx2"))) bool avx2_meets(const BoxColumns& c, std::uint32_t from,
+                                                std::uint32_t to, const Box& b) {
+  const __m256d x0 = _mm256_set1_pd(b.x0), x1 = _mm256_set1_pd(b.x1);
+  const __m256d y0 = _mm256_set1_pd(b.y0), y1 = _mm256_set1_pd(b.y1);
+  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
+  __m256d any = _mm256_setzero_pd();
+  for (std::uint32_t f = from; f < to; f += 4) {
+    const __m256d valid = _mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(to - f), lane));
+    any = _mm256_or_pd(any, _mm256_and_pd(valid, avx2_step(c, f, x0, y0, x1, y1)));
+  }
+  return _mm256_movemask_pd(any) != 0;
+}
+
+__attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<const RowRanges> rows,
+                                               std::span<std::uint64_t> meets) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const RowRanges& r = rows[k];
+    const Box b = c.box(r.row);
+    const bool met = avx2_meets(c, r.from, r.to, b) | avx2_meets(c, r.from2, r.to2, b);
+    meets[k / 64] |= static_cast<std::uint64_t>(met) << (k % 64);
+  }
+}
+#endif
+
+template <class Meets>
+void rows_with(const BoxColumns& c, std::span<const RowRanges> rows, std::span<std::uint64_t> meets,
+               Meets&& scan) {
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    const RowRanges& r = rows[k];
+    const Box b = c.box(r.row);
+    const bool met = scan(c, r.from, r.to, b) | scan(c, r.from2, r.to2, b);
+    meets[k / 64] |= static_cast<std::uint64_t>(met) << (k % 64);
+  }
+}
+
+}  // namespace
+
+void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
+                  std::span<std::uint64_t> meets, BoxScan scan) {
+  std::fill(meets.begin(), meets.end(), 0);
+#if PEAR_BOX_SCAN_X86
+  static const bool has_avx2 = __builtin_cpu_supports("avx2");
+  if (scan == BoxScan::best && has_avx2) return avx2_rows(columns, rows, meets);
+  if (scan != BoxScan::scalar) return rows_with(columns, rows, meets, sse2_meets);
+#endif
+  rows_with(columns, rows, meets, scalar_meets);
+}
+
+}  // namespace pear::detail
