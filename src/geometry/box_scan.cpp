@@ -11,7 +11,8 @@ namespace pear::detail {
 namespace {
 
 bool meets_one(const BoxColumns& c, std::uint32_t f, const Box& b) {
-  return (c.x0[f] <= b.x1) & (b.x0 <= c.x1[f]) & (c.y0[f] <= b.y1) & (b.y0 <= c.y1[f]);
+  const double x0 = c.x0[f], y0 = c.y0[f], x1 = c.x1[f], y1 = c.y1[f];
+  return (x0 <= b.x1) & (b.x0 <= x1) & (y0 <= b.y1) & (b.y0 <= y1);
 }
 
 bool scalar_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
@@ -33,7 +34,8 @@ bool sse2_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const
                                     _mm_cmple_pd(y0, _mm_loadu_pd(&c.y1[f])));
     any = _mm_or_pd(any, _mm_and_pd(in_x, in_y));
   }
-  return (_mm_movemask_pd(any) != 0) | scalar_meets(c, f, to, b);
+  const bool tail = scalar_meets(c, f, to, b);  // both ends computed: no branch between them
+  return (_mm_movemask_pd(any) != 0) | tail;
 }
 
 /// Lanes whose box of columns [f, f + 4) meets the box of sides x0, x1, y0, y1 (broadcast).
@@ -67,8 +69,8 @@ __attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<co
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const RowRanges& r = rows[k];
     const Box b = c.box(r.row);
-    const bool met = avx2_meets(c, r.from, r.to, b) | avx2_meets(c, r.from2, r.to2, b);
-    meets[k / 64] |= static_cast<std::uint64_t>(met) << (k % 64);
+    const bool first = avx2_meets(c, r.from, r.to, b), second = avx2_meets(c, r.from2, r.to2, b);
+    meets[k / 64] |= static_cast<std::uint64_t>(first | second) << (k % 64);
   }
 }
 #endif
@@ -79,8 +81,8 @@ void rows_with(const BoxColumns& c, std::span<const RowRanges> rows, std::span<s
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const RowRanges& r = rows[k];
     const Box b = c.box(r.row);
-    const bool met = scan(c, r.from, r.to, b) | scan(c, r.from2, r.to2, b);
-    meets[k / 64] |= static_cast<std::uint64_t>(met) << (k % 64);
+    const bool first = scan(c, r.from, r.to, b), second = scan(c, r.from2, r.to2, b);
+    meets[k / 64] |= static_cast<std::uint64_t>(first | second) << (k % 64);
   }
 }
 

@@ -19,8 +19,10 @@ bool coordinate_in_range(double c) {
 /// first (NaN and infinities fail the range test too); the error is named only when there is one.
 bool check_coordinates(const PolygonView& in, std::vector<Diagnostic>& diagnostics) {
   bool all_in_range = true;
-  for (const Point& p : in.points)
-    all_in_range &= coordinate_in_range(p.x) & coordinate_in_range(p.y);
+  for (const Point& p : in.points) {
+    all_in_range &= coordinate_in_range(p.x);
+    all_in_range &= coordinate_in_range(p.y);
+  }
   if (all_in_range) return true;
   for (std::size_t r = 0; r + 1 < in.ring_offsets.size(); ++r) {
     for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {

@@ -204,7 +204,8 @@ void visit_pair(const RingEdges& edges, std::uint32_t e, std::uint32_t f, bool f
                 std::uint32_t& smallest, SmallVerdict& verdict) {
   const EdgeBox &s = edges.boxes[e], &t = edges.boxes[f];
   // One branch (`&`): most pairs are apart in y, which the predictor then learns.
-  if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (edges.next[e] != f) & (edges.next[f] != e))) return;
+  const std::uint32_t after_e = edges.next[e], after_f = edges.next[f];
+  if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (after_e != f) & (after_f != e))) return;
   const auto& pts = *edges.points;
   const Point &a = pts[e], &b = pts[edges.next[e]], &c = pts[f], &d = pts[edges.next[f]];
   if (a == c || a == d || b == c || b == d) verdict.touching = true;
