@@ -118,7 +118,38 @@ bool Engine::prepare(const PolygonView& input, bool check_simplicity, const RunC
     diagnostics.push_back(why_not_valid(input, true, boundary_.vertex[overlapping]));
     status = Status::not_simple;
   }
+  // A hole that passes a point twice has lobes, and a lobe can lie outside the outer ring (or
+  // in another hole) while the rest of the hole lies right: clipping would take it for an
+  // island. Asked only then (rare), since it sorts every vertex.
+  if (check_simplicity && status == Status::ok && hole_touches_itself())
+    if (const auto hole = find_misplaced_hole(clean_)) {
+      diagnostics.push_back(locate(
+          input, hole->outside_outer ? Issue::hole_outside_outer_ring : Issue::hole_inside_hole,
+          clean_.original[hole->vertex]));
+      status = Status::not_simple;
+    }
   return true;
+}
+
+bool Engine::hole_touches_itself() {
+  // The nodes of clean_'s vertices come first in boundary_; those at a position another node
+  // has are few (bridge ends, touching points).
+  if (clean_.ring_count() < 2) return false;
+  const std::vector<std::uint8_t>& shared = touching_.shared_positions();
+  positions_.clear();
+  std::size_t ring = 1;
+  for (std::uint32_t i = clean_.ring_starts[1]; i < clean_.points.size(); ++i) {
+    while (i >= clean_.ring_starts[ring + 1]) ++ring;
+    if (shared[i]) positions_.push_back({clean_.points[i], static_cast<std::uint32_t>(ring)});
+  }
+  std::sort(positions_.begin(), positions_.end(), [](const auto& a, const auto& b) {
+    return lexicographic_less(a.first, b.first) || (a.first == b.first && a.second < b.second);
+  });
+  for (std::size_t k = 1; k < positions_.size(); ++k)
+    if (positions_[k].first == positions_[k - 1].first &&
+        positions_[k].second == positions_[k - 1].second)
+      return true;
+  return false;
 }
 
 bool Engine::clip(Algorithm algorithm, const Options& options, const RunContext& ctx,

@@ -57,6 +57,8 @@ class Engine {
   /// boundary_ from clean_'s rings, the holes joined by bridges; returns the leftmost node of
   /// every hole that could not be joined.
   std::vector<std::uint32_t> bridge_holes();
+  /// After untangling: whether a hole passes one of its points twice.
+  bool hole_touches_itself();
   /// Cleans and bridges; returns false when nothing can be triangulated.
   bool prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
                std::vector<Diagnostic>& diagnostics, Status& status);
@@ -92,6 +94,7 @@ class Engine {
   SmallClipper small_;
   std::vector<Point> ring_points_;  ///< the bridged boundary as one ring, for small_
   std::vector<std::uint32_t> ring_original_;
+  std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
 };
 
 }  // namespace pear::detail

@@ -79,8 +79,14 @@ class Bands {
   std::vector<std::uint32_t> start_, edges_;
 };
 
-/// Each vertex's witness status: false where another ring has a vertex at the same point.
-std::vector<std::uint8_t> unshared_vertices(const CleanPolygon& polygon) {
+/// Each vertex's witness status (false where another ring has a vertex at the same point), and
+/// whether each ring passes a point twice itself.
+struct Witnesses {
+  std::vector<std::uint8_t> unshared;
+  std::vector<std::uint8_t> self_touching;
+};
+
+Witnesses find_witnesses(const CleanPolygon& polygon) {
   std::vector<std::pair<Point, std::uint32_t>> at;  // (position, ring)
   for (std::uint32_t r = 0; r < polygon.ring_count(); ++r)
     for (std::uint32_t i = polygon.ring_starts[r]; i < polygon.ring_starts[r + 1]; ++i)
@@ -92,17 +98,23 @@ std::vector<std::uint8_t> unshared_vertices(const CleanPolygon& polygon) {
     return s.second < t.second;
   };
   std::sort(at.begin(), at.end(), less);
+  Witnesses w{std::vector<std::uint8_t>(polygon.points.size(), 1),
+              std::vector<std::uint8_t>(polygon.ring_count(), 0)};
   std::vector<std::pair<Point, std::uint32_t>> shared;  // positions of two rings or more
-  for (std::size_t i = 1; i < at.size(); ++i)
-    if (at[i].first == at[i - 1].first && at[i].second != at[i - 1].second) shared.push_back(at[i]);
-  std::vector<std::uint8_t> unshared(polygon.points.size(), 1);
+  for (std::size_t i = 1; i < at.size(); ++i) {
+    if (!(at[i].first == at[i - 1].first)) continue;
+    if (at[i].second != at[i - 1].second)
+      shared.push_back(at[i]);
+    else
+      w.self_touching[at[i].second] = 1;
+  }
   for (std::uint32_t i = 0; i < polygon.points.size(); ++i)
-    unshared[i] = !std::binary_search(
+    w.unshared[i] = !std::binary_search(
         shared.begin(), shared.end(), std::pair(polygon.points[i], 0u),
         [](const auto& s, const auto& t) {
           return s.first.x < t.first.x || (s.first.x == t.first.x && s.first.y < t.first.y);
         });
-  return unshared;
+  return w;
 }
 
 }  // namespace
@@ -110,26 +122,30 @@ std::vector<std::uint8_t> unshared_vertices(const CleanPolygon& polygon) {
 std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon) {
   const std::size_t rings = polygon.ring_count();
   if (rings < 2) return std::nullopt;
-  const std::vector<std::uint8_t> unshared = unshared_vertices(polygon);
+  const Witnesses witnesses = find_witnesses(polygon);
   const Bands bands(polygon);
   std::vector<std::uint8_t> parity(rings, 0);
   std::vector<std::uint32_t> around;
   for (std::uint32_t hole = 1; hole < rings; ++hole) {
-    const auto first = unshared.begin() + polygon.ring_starts[hole];
-    const auto witness = std::find(first, unshared.begin() + polygon.ring_starts[hole + 1], 1);
-    // A hole whose every vertex another ring shares is left undecided (its edges meet the
-    // others only there, so the best effort's place names it).
-    if (witness == unshared.begin() + polygon.ring_starts[hole + 1]) continue;
-    const auto vertex = static_cast<std::uint32_t>(witness - unshared.begin());
-    around.clear();
-    bands.rings_around(polygon.points[vertex], parity, around);
-    bool in_outer = false, in_hole = false;
-    for (std::uint32_t r : around) {
-      if (parity[r] && r != hole) (r == 0 ? in_outer : in_hole) = true;
-      parity[r] = 0;
+    // One vertex that no other ring shares decides for a hole, which lies inside or outside
+    // each other ring as a whole; a hole that passes a point twice has lobes, each of which
+    // may lie elsewhere, so every such vertex of it is asked. A hole whose every vertex
+    // another ring shares is left undecided (its edges meet the others only there, so the
+    // best effort's place names it).
+    for (std::uint32_t vertex = polygon.ring_starts[hole]; vertex < polygon.ring_starts[hole + 1];
+         ++vertex) {
+      if (!witnesses.unshared[vertex]) continue;
+      around.clear();
+      bands.rings_around(polygon.points[vertex], parity, around);
+      bool in_outer = false, in_hole = false;
+      for (std::uint32_t r : around) {
+        if (parity[r] && r != hole) (r == 0 ? in_outer : in_hole) = true;
+        parity[r] = 0;
+      }
+      if (!in_outer) return MisplacedHole{vertex, true};
+      if (in_hole) return MisplacedHole{vertex, false};
+      if (!witnesses.self_touching[hole]) break;
     }
-    if (!in_outer) return MisplacedHole{vertex, true};
-    if (in_hole) return MisplacedHole{vertex, false};
   }
   return std::nullopt;
 }

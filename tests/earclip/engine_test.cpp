@@ -118,6 +118,32 @@ TEST_P(Engine, SelfTouchingRingFigureEight) {
   expect_valid(Polygon{r}, GetParam(), "figure eight");
 }
 
+TEST_P(Engine, SelfTouchingHoleWithLobesAlike) {
+  // A hole that visits (5, 5) twice, both lobes clockwise, inside a square: a valid polygon.
+  const Polygon p = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                     {{5, 5}, {3, 6}, {3, 4}, {5, 5}, {7, 4}, {7, 6}}};
+  const auto result = triangulate(p, {.heuristic = GetParam()});
+  EXPECT_EQ(result.status, Status::ok);
+  EXPECT_TRUE(validate(p, result.triangles).valid);
+}
+
+/// A hole that passes (4, -4) twice with lobes wound oppositely, its pinch inside an outer edge
+/// (split there: a T-junction), one lobe outside the outer ring. Once the clipper took that lobe
+/// for an island: status ok and a triangulation the validator rejected. It is not a polygon.
+TEST_P(Engine, SelfTouchingHoleWithALobeOutsideIsNotSimple) {
+  const Polygon p = {
+      {{6, 3}, {0, 4}, {-7, 1}, {-2, -1}, {-6, -2}, {-5, -2}, {0, -7}, {1, -7}, {7, -1}},
+      {{0, -2}, {-1.5, -2}, {-0.5, -0.5}, {0.5, -0.5}},
+      {{4, -4}, {4.5, -4}, {4, -4.5}, {4, -4}, {3.5, -4}, {3, -4.5}}};
+  for (const Algorithm algorithm : {Algorithm::automatic, Algorithm::partition_and_cut}) {
+    const auto result = triangulate(p, {.algorithm = algorithm, .heuristic = GetParam()});
+    EXPECT_EQ(result.status, Status::not_simple);
+    ASSERT_FALSE(result.diagnostics.empty());
+    EXPECT_EQ(result.diagnostics.back().issue, Issue::hole_outside_outer_ring);
+    EXPECT_EQ(result.diagnostics.back().ring, 2u);
+  }
+}
+
 TEST_P(Engine, ZeroWidthAntennaIsDissolved) {
   // A spike out and back along the same segment covers no area: cleaning drops its tip (2, 8)
   // and the repeated (2, 4), leaving the square with a collinear vertex: 3 triangles.
