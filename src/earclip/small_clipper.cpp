@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "ear_test.hpp"
+#include "pinches.hpp"
 
 namespace pear::detail {
 namespace {
@@ -55,20 +56,13 @@ void SmallClipper::Slabs::build(std::span<const Point> points, double Point::*ax
   }
 }
 
-/// shared_ marks every node whose position another node has: sorted by position, equal
-/// neighbours in the order.
+/// shared_ marks every node whose position another node has (find_pinches, as the general
+/// clipper marks its pinches).
 void SmallClipper::mark_repeated_positions() {
-  const auto n = static_cast<std::uint32_t>(b_.pos.size());
-  order_.resize(n);
-  for (std::uint32_t i = 0; i < n; ++i) order_[i] = i;
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t u, std::uint32_t w) {
-    return lexicographic_less(b_.pos[u], b_.pos[w]);
-  });
-  for (std::uint32_t k = 0; k + 1 < n; ++k) {
-    if (!(b_.pos[order_[k]] == b_.pos[order_[k + 1]])) continue;
-    shared_.add(order_[k]);
-    shared_.add(order_[k + 1]);
-  }
+  live_.assign(b_.size(), 1);
+  find_pinches(b_, live_, b_.size(), pinch_, position_table_);
+  for (std::uint32_t u = 0; u < b_.size(); ++u)
+    if (pinch_[u]) shared_.add(u);
 }
 
 void SmallClipper::load(std::span<const Point> points, std::span<const std::uint32_t> original) {

@@ -80,10 +80,11 @@ class SmallClipper {
   std::array<std::uint32_t, max_words> word_best_;
   std::uint32_t stale_words_ = 0;
   Slabs xs_, ys_;
-  bool slabbed_ = false;              ///< whether xs_ and ys_ are built (more than one word)
-  bool keyed_ = true;                 ///< whether key_ is kept (`top`)
-  std::uint32_t words_ = 0;           ///< words of the sets in use
-  std::vector<std::uint32_t> order_;  ///< scratch: nodes by position
+  bool slabbed_ = false;                    ///< whether xs_ and ys_ are built (more than one word)
+  bool keyed_ = true;                       ///< whether key_ is kept (`top`)
+  std::uint32_t words_ = 0;                 ///< words of the sets in use
+  std::vector<std::uint8_t> live_, pinch_;  ///< mark_repeated_positions' scratch
+  std::vector<std::uint32_t> position_table_;
   std::uint32_t remaining_ = 0;
   std::uint32_t anchor_ = 0;  ///< a live node
 };

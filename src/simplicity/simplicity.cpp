@@ -254,8 +254,7 @@ SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool 
       const RowRanges& r = rows_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(set))];
       if (!indexed) {
         edges_.boxes.resize(n);
-        for (std::uint32_t i = 0; i < n; ++i)
-          edges_.boxes[i] = {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
+        for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = c.box(i);
         indexed = true;
       }
       const Box box = c.box(r.row);

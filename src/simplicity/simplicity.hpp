@@ -25,9 +25,8 @@
 namespace pear::detail {
 
 /// The closed bounding box of an edge: exact (min and max of coordinates, no rounding).
-struct EdgeBox {
-  double x0, y0, x1, y1;
-};
+/// An edge's closed bounding box.
+using EdgeBox = Box;
 
 inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};

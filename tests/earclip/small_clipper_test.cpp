@@ -171,9 +171,10 @@ void expect_small_path_agrees(Triangulator& triangulator, const Polygon& polygon
     EXPECT_EQ(a.triangles.size(), b.triangles.size());
     EXPECT_TRUE(validate(polygon, a.triangles).valid);
     EXPECT_TRUE(validate(polygon, b.triangles).valid);
-    if (h == EarHeuristic::top)
+    if (h == EarHeuristic::top) {
       EXPECT_GT(quality(polygon, a.triangles).min_angle_avg_deg,
                 0.9 * quality(polygon, b.triangles).min_angle_avg_deg);
+    }
   }
 }
 
