@@ -65,6 +65,8 @@ void SmallClipper::mark_repeated_positions() {
     if (pinch_[u]) shared_.add(u);
 }
 
+/// One pass over the ring: links, sides, and each corner's turn and key, the sets written a
+/// word at a time (refresh() does the same for one node).
 void SmallClipper::load(std::span<const Point> points, std::span<const std::uint32_t> original) {
   const auto n = static_cast<std::uint32_t>(points.size());
   b_.pos.assign(points.begin(), points.end());
@@ -77,14 +79,31 @@ void SmallClipper::load(std::span<const Point> points, std::span<const std::uint
   stale_words_ = ~0u;
   reflex_.words.fill(0);
   convex_.words.fill(0);
-  candidates_.words.fill(0);
   shared_.words.fill(0);
+  const Point* p = points.data();
+  Point before = p[n - 1];
+  double side_before = squared_distance(before, p[0]);
+  std::uint64_t reflex = 0, convex = 0;
   for (std::uint32_t i = 0; i < n; ++i) {
+    const std::uint32_t after = i + 1 == n ? 0 : i + 1;
+    const Point &t = p[i], &c = p[after];
     b_.prev[i] = i == 0 ? n - 1 : i - 1;
-    b_.next[i] = i + 1 == n ? 0 : i + 1;
-    if (keyed_) side_[i] = squared_distance(points[i], points[b_.next[i]]);
+    b_.next[i] = after;
+    const double side = squared_distance(t, c), turn = orient2d(before, t, c);
+    side_[i] = side;
+    const std::uint64_t bit = std::uint64_t{1} << (i % 64);
+    convex |= bit & (std::uint64_t{0} - (turn > 0));
+    reflex |= bit & (std::uint64_t{0} - (turn < 0));
+    if (keyed_) key_[i] = top_key(before, c, side_before, side, turn);
+    if (i % 64 == 63 || after == 0) {
+      convex_.words[i / 64] = convex;
+      reflex_.words[i / 64] = reflex;
+      convex = reflex = 0;
+    }
+    before = t;
+    side_before = side;
   }
-  for (std::uint32_t i = 0; i < n; ++i) refresh(i);
+  candidates_ = convex_;
   slabbed_ = words_ > 1;
   if (slabbed_) {
     xs_.build(points, &Point::x, words_);

@@ -15,39 +15,39 @@ bool coordinate_in_range(double c) {
   return (m == 0.0) | ((m >= min_nonzero_coordinate) & (m <= max_coordinate));
 }
 
-/// First error among the coordinates of all rings, if any. One test per point without a branch
-/// first (NaN and infinities fail the range test too); the error is named only when there is one.
-bool check_coordinates(const PolygonView& in, std::vector<Diagnostic>& diagnostics) {
-  bool all_in_range = true;
-  for (const Point& p : in.points) {
-    all_in_range &= coordinate_in_range(p.x);
-    all_in_range &= coordinate_in_range(p.y);
-  }
-  if (all_in_range) return true;
-  for (std::size_t r = 0; r + 1 < in.ring_offsets.size(); ++r) {
+/// Names the first coordinate, from ring `from` on, that is not finite or out of range;
+/// returns whether there is one.
+bool name_coordinate_error(const PolygonView& in, std::size_t from,
+                           std::vector<Diagnostic>& diagnostics) {
+  for (std::size_t r = from; r + 1 < in.ring_offsets.size(); ++r) {
     for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {
       const Point& p = in.points[i];
       const std::size_t vertex = i - in.ring_offsets[r];
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         diagnostics.push_back({Issue::non_finite_coordinate, r, vertex});
-        return false;
+        return true;
       }
       if (!coordinate_in_range(p.x) || !coordinate_in_range(p.y)) {
         diagnostics.push_back({Issue::coordinate_out_of_range, r, vertex});
-        return false;
+        return true;
       }
     }
   }
-  return true;
+  return false;
+}
+
+/// The lowest point, leftmost among equals: a convex corner of any simple ring.
+std::size_t lowest_leftmost(const Point* p, std::size_t n) {
+  std::size_t lowest = 0;
+  for (std::size_t i = 1; i < n; ++i)
+    if (p[i].y < p[lowest].y || (p[i].y == p[lowest].y && p[i].x < p[lowest].x)) lowest = i;
+  return lowest;
 }
 
 /// +1 counterclockwise, -1 clockwise, 0 when every point is collinear (zero area).
 /// Decided exactly at the lowest-leftmost vertex, which is convex for a simple ring;
 /// for non-simple rings whose extreme corner is flat, the shoelace sign decides.
-int ring_orientation(const Point* p, std::size_t n) {
-  std::size_t lowest = 0;
-  for (std::size_t i = 1; i < n; ++i)
-    if (p[i].y < p[lowest].y || (p[i].y == p[lowest].y && p[i].x < p[lowest].x)) lowest = i;
+int ring_orientation(const Point* p, std::size_t n, std::size_t lowest) {
   const double turn = orient2d(p[(lowest + n - 1) % n], p[lowest], p[(lowest + 1) % n]);
   if (turn != 0) return turn > 0 ? 1 : -1;
   long double area = 0;
@@ -73,16 +73,20 @@ bool folds_back(const Point& a, const Point& b, const Point& c) {
 }
 
 /// Appends ring `ring` of the input without repeated consecutive points (the first occurrence
-/// stays) nor a repeated closing point. Each point is written, and kept by a count, not a branch.
-void append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& out) {
+/// stays) nor a repeated closing point. Each point is written, and kept by a count, not a branch;
+/// returns whether every coordinate is in range, tested without a branch too (NaN and
+/// infinities fail the range test).
+bool append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& out) {
   const std::size_t first = out.points.size();
   const std::uint32_t begin = in.ring_offsets[ring], end = in.ring_offsets[ring + 1];
   out.points.resize(first + (end - begin));
   out.original.resize(first + (end - begin));
   std::size_t kept = first;
   Point last = {std::numeric_limits<double>::quiet_NaN(), 0};  // equal to no point
+  bool in_range = true;
   for (std::uint32_t i = begin; i < end; ++i) {
     const Point p = in.points[i];
+    in_range &= coordinate_in_range(p.x) & coordinate_in_range(p.y);
     out.points[kept] = p;
     out.original[kept] = i;
     kept += (p.x != last.x) | (p.y != last.y);
@@ -91,19 +95,26 @@ void append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& 
   while (kept > first + 1 && out.points[kept - 1] == out.points[first]) --kept;
   out.points.resize(kept);
   out.original.resize(kept);
+  return in_range;
 }
 
 /// Whether any corner of the ring from `first` on folds back (a tip). Every corner first
 /// without a branch: a positive dot product (see folds_back) or an orientation the filter of
 /// orient2d finds clearly nonzero rules it out. Real rings turn sharply at a quarter of their
-/// corners, but tips are rare: the exact test then runs for almost none.
-bool has_tip(const std::vector<Point>& pts, std::size_t first) {
+/// corners, but tips are rare: the exact test then runs for almost none. The same pass finds the
+/// ring's lowest-leftmost point (`lowest`, relative to `first`), also without a branch.
+bool has_tip(const std::vector<Point>& pts, std::size_t first, std::size_t& lowest) {
   const std::size_t n = pts.size() - first;
+  lowest = 0;
   if (n < 3) return false;
   const Point* p = pts.data() + first;
   bool maybe = false;
+  Point low = p[0];
   for (std::size_t k = 0, before = n - 1; k < n; before = k++) {
     const Point &a = p[before], &b = p[k], &c = p[k + 1 == n ? 0 : k + 1];
+    const bool lower = (b.y < low.y) | ((b.y == low.y) & (b.x < low.x));
+    lowest = lower ? k : lowest;
+    low = lower ? b : low;
     const double left = (a.x - c.x) * (b.y - c.y), right = (a.y - c.y) * (b.x - c.x);
     const bool turns =
         std::fabs(left - right) > 2 * orient2d_filter_bound * (std::fabs(left) + std::fabs(right));
@@ -208,23 +219,35 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
     diagnostics.push_back({Issue::empty_input, 0, 0});
     return Status::invalid_input;
   }
-  if (!check_coordinates(in, diagnostics)) return Status::invalid_input;
-
+  const std::size_t earlier = diagnostics.size();
   for (std::size_t r = 0; r < rings; ++r) {
     const std::size_t first = out.points.size();
     const std::size_t warnings = diagnostics.size();
-    append_deduplicated(in, r, out);
-    if (has_tip(out.points, first)) dissolve_spikes(out, first, r, in, diagnostics);
+    if (!append_deduplicated(in, r, out)) {
+      // Bad coordinates make the whole input invalid: the earlier rings' warnings go.
+      diagnostics.resize(earlier);
+      name_coordinate_error(in, r, diagnostics);
+      return Status::invalid_input;
+    }
+    std::size_t lowest = 0;
+    if (has_tip(out.points, first, lowest)) {
+      dissolve_spikes(out, first, r, in, diagnostics);
+      lowest = lowest_leftmost(&out.points[first], out.points.size() - first);
+    }
     const std::size_t count = out.points.size() - first;
-    const int orientation = count >= 3 ? ring_orientation(&out.points[first], count) : 0;
+    const int orientation = count >= 3 ? ring_orientation(&out.points[first], count, lowest) : 0;
     if (count < 3 || orientation == 0) {
       // A ring that is all spike (any collinear ring is) goes as a whole, named once.
       diagnostics.resize(warnings);
       const Issue issue = r == 0 ? Issue::outer_ring_too_small
                                  : (fewer_than_3_points(in, r) ? Issue::hole_dropped_too_small
                                                                : Issue::hole_dropped_zero_area);
+      if (r == 0) {
+        // The input is invalid either way; a bad coordinate further on is named first.
+        if (!name_coordinate_error(in, 1, diagnostics)) diagnostics.push_back({issue, r, 0});
+        return Status::invalid_input;
+      }
       diagnostics.push_back({issue, r, 0});
-      if (r == 0) return Status::invalid_input;
       drop_ring(out, first);
       continue;
     }

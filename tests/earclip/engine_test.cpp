@@ -208,6 +208,23 @@ TEST(EngineInput, NaNIsAnErrorNamingRingAndVertex) {
   EXPECT_TRUE(result.triangles.empty());
 }
 
+// Cleaning tests each ring's coordinates as it copies it: a bad coordinate in a later ring must
+// still be the one error reported, without the warnings of the rings cleaned before it.
+TEST(EngineInput, ABadCoordinateIsTheOnlyDiagnosticWhereverItIs) {
+  Polygon spiked = {{{0, 0}, {10, 0}, {10, 10}, {5, 10}, {5, 12}, {5, 10}, {0, 10}},
+                    reversed(square(4, 4, 2)),
+                    {{1, 1}, {1, 1}, {1, 1}}};
+  spiked[2][1].x = std::numeric_limits<double>::infinity();
+  for (const Polygon& p : {spiked, Polygon{{{0, 0}, {1, 0}}, spiked[2]}}) {
+    const auto result = triangulate(p);
+    EXPECT_EQ(result.status, Status::invalid_input);
+    ASSERT_EQ(result.diagnostics.size(), 1u);
+    EXPECT_EQ(result.diagnostics[0].issue, Issue::non_finite_coordinate);
+    EXPECT_EQ(result.diagnostics[0].ring, p.size() - 1);
+    EXPECT_EQ(result.diagnostics[0].vertex, 1u);
+  }
+}
+
 TEST(EngineInput, HugeAndTinyCoordinatesAreErrors) {
   Polygon p = {square(0, 0, 1)};
   p[0][3].x = 1e61;  // 2^200 is about 1.6e60
