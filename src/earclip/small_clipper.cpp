@@ -105,7 +105,9 @@ void SmallClipper::load(std::span<const Point> points, std::span<const std::uint
   }
   candidates_ = convex_;
   slabbed_ = words_ > 1;
-  if (slabbed_) {
+  if (!slabbed_) {
+    for (std::uint32_t i = 0; i < n; ++i) columns_.x[i] = p[i].x, columns_.y[i] = p[i].y;
+  } else {
     xs_.build(points, &Point::x, words_);
     ys_.build(points, &Point::y, words_);
   }
@@ -146,22 +148,28 @@ bool SmallClipper::is_ear(std::uint32_t v) const {
   const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
   const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
   const Point* pos = b_.pos.data();
-  std::uint32_t sx0 = 0, sx1 = 0, sy0 = 0, sy1 = 0;
-  if (slabbed_) sx0 = xs_.slab(x0), sx1 = xs_.slab(x1), sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
-  for (std::uint32_t w = 0; w < words_; ++w) {
-    // The ear's own corners cannot block it; nodes at a repeated position may, whatever
-    // their angle.
-    std::uint64_t near = (reflex_.words[w] | shared_.words[w]) &
-                         ~(bit_in_word(p, w) | bit_in_word(v, w) | bit_in_word(n, w));
-    if (slabbed_)
-      near &= xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
-              ys_.from[sy0].words[w];
+  // The ear's own corners cannot block it; nodes at a repeated position may, whatever their
+  // angle. Each node left is tested for the box first: most lie outside.
+  const auto blocked = [&](std::uint64_t near, std::uint32_t w) {
+    near &= (reflex_.words[w] | shared_.words[w]) &
+            ~(bit_in_word(p, w) | bit_in_word(v, w) | bit_in_word(n, w));
     for (std::uint64_t set = near; set != 0; set &= set - 1) {
       const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
       const Point& x = pos[q];
       if (!((x.x >= x0) & (x.x <= x1) & (x.y >= y0) & (x.y <= y1))) continue;
-      if (blocks(b_, AllLinks{}, p, v, n, q, a, t, c, x)) return false;
+      if (blocks(b_, AllLinks{}, p, v, n, q, a, t, c, x)) return true;
     }
+    return false;
+  };
+  // One word: the nodes in the box, found a few at a time without a branch, then only those.
+  if (!slabbed_) return !blocked(points_in_box(columns_, b_.size(), {x0, y0, x1, y1}), 0);
+  const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
+  const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    if (blocked(xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
+                    ys_.from[sy0].words[w],
+                w))
+      return false;
   }
   return true;
 }

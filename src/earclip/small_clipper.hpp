@@ -16,6 +16,7 @@
 
 #include "boundary.hpp"
 #include "core/stage.hpp"
+#include "geometry/box_scan.hpp"
 
 namespace pear::detail {
 
@@ -80,6 +81,7 @@ class SmallClipper {
   std::array<std::uint32_t, max_words> word_best_;
   std::uint32_t stale_words_ = 0;
   Slabs xs_, ys_;
+  PointColumns columns_;                    ///< the positions, when one word holds every node
   bool slabbed_ = false;                    ///< whether xs_ and ys_ are built (more than one word)
   bool keyed_ = true;                       ///< whether key_ is kept (`top`)
   std::uint32_t words_ = 0;                 ///< words of the sets in use

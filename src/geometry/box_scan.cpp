@@ -75,6 +75,52 @@ __attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<co
 }
 #endif
 
+/// The bits of [0, count), count <= 64.
+std::uint64_t first_bits(std::uint32_t count) {
+  return count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
+}
+
+std::uint64_t scalar_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
+  std::uint64_t in = 0;
+  for (std::uint32_t i = 0; i < count; ++i)
+    in |= static_cast<std::uint64_t>((p.x[i] >= b.x0) & (p.x[i] <= b.x1) & (p.y[i] >= b.y0) &
+                                     (p.y[i] <= b.y1))
+          << i;
+  return in;
+}
+
+#if PEAR_BOX_SCAN_X86
+/// Two points a step, four with AVX2; the lanes past `count` read padding and are masked off.
+std::uint64_t sse2_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
+  const __m128d x0 = _mm_set1_pd(b.x0), x1 = _mm_set1_pd(b.x1);
+  const __m128d y0 = _mm_set1_pd(b.y0), y1 = _mm_set1_pd(b.y1);
+  std::uint64_t in = 0;
+  for (std::uint32_t i = 0; i < count; i += 2) {
+    const __m128d x = _mm_loadu_pd(&p.x[i]), y = _mm_loadu_pd(&p.y[i]);
+    const __m128d in_x = _mm_and_pd(_mm_cmple_pd(x0, x), _mm_cmple_pd(x, x1));
+    const __m128d in_y = _mm_and_pd(_mm_cmple_pd(y0, y), _mm_cmple_pd(y, y1));
+    in |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << i;
+  }
+  return in & first_bits(count);
+}
+
+__attribute__((target("avx2"))) std::uint64_t avx2_in_box(const PointColumns& p,
+                                                          std::uint32_t count, const Box& b) {
+  const __m256d x0 = _mm256_set1_pd(b.x0), x1 = _mm256_set1_pd(b.x1);
+  const __m256d y0 = _mm256_set1_pd(b.y0), y1 = _mm256_set1_pd(b.y1);
+  std::uint64_t in = 0;
+  for (std::uint32_t i = 0; i < count; i += 4) {
+    const __m256d x = _mm256_loadu_pd(&p.x[i]), y = _mm256_loadu_pd(&p.y[i]);
+    const __m256d in_x =
+        _mm256_and_pd(_mm256_cmp_pd(x0, x, _CMP_LE_OQ), _mm256_cmp_pd(x, x1, _CMP_LE_OQ));
+    const __m256d in_y =
+        _mm256_and_pd(_mm256_cmp_pd(y0, y, _CMP_LE_OQ), _mm256_cmp_pd(y, y1, _CMP_LE_OQ));
+    in |= static_cast<std::uint64_t>(_mm256_movemask_pd(_mm256_and_pd(in_x, in_y))) << i;
+  }
+  return in & first_bits(count);
+}
+#endif
+
 template <class Meets>
 void rows_with(const BoxColumns& c, std::span<const RowRanges> rows, std::span<std::uint64_t> meets,
                Meets&& scan) {
@@ -97,6 +143,16 @@ void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
   if (scan != BoxScan::scalar) return rows_with(columns, rows, meets, sse2_meets);
 #endif
   rows_with(columns, rows, meets, scalar_meets);
+}
+
+std::uint64_t points_in_box(const PointColumns& points, std::uint32_t count, const Box& box,
+                            BoxScan scan) {
+#if PEAR_BOX_SCAN_X86
+  static const bool has_avx2 = __builtin_cpu_supports("avx2");
+  if (scan == BoxScan::best && has_avx2) return avx2_in_box(points, count, box);
+  if (scan != BoxScan::scalar) return sse2_in_box(points, count, box);
+#endif
+  return scalar_in_box(points, count, box);
 }
 
 }  // namespace pear::detail

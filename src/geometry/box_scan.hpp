@@ -3,7 +3,8 @@
 // counties' rows do), so the cost is the comparisons: four boxes a step with AVX2 where the
 // processor has it (chosen at run time), two with SSE2 (x86-64's baseline), one elsewhere, all
 // without a branch on the data. Intrinsics, not GCC's vector types, whose comparison masks
-// GCC 12 takes apart lane by lane.
+// GCC 12 takes apart lane by lane. The small clipper's ear test asks the same of points: which
+// of up to 64 lie in the ear's box.
 #pragma once
 
 #include <array>
@@ -29,12 +30,23 @@ struct RowRanges {
   std::uint32_t row, from, to, from2, to2;
 };
 
-/// Which instructions rows_meeting uses: the best the processor has, or one named (for tests).
+/// Up to 64 points as a column per coordinate, padded so that a four-wide load stays inside.
+struct PointColumns {
+  static constexpr std::uint32_t capacity = 64;
+  std::array<double, capacity + 4> x{}, y{};
+};
+
+/// Which instructions rows_meeting and points_in_box use: the best the processor has, or one
+/// named (for tests).
 enum class BoxScan : std::uint8_t { best, sse2, scalar };
 
 /// Sets bit k of `meets` (rows.size() bits, in 64-bit words, cleared first) when the box of
 /// rows[k].row meets any box in its ranges.
 void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
                   std::span<std::uint64_t> meets, BoxScan scan = BoxScan::best);
+
+/// Bit i set when point i of [0, count) (count <= 64) lies in `box`, sides included.
+std::uint64_t points_in_box(const PointColumns& points, std::uint32_t count, const Box& box,
+                            BoxScan scan = BoxScan::best);
 
 }  // namespace pear::detail
