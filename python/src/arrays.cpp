@@ -125,11 +125,27 @@ template py::array vector_array(std::vector<std::int64_t>&&);
 template py::array vector_array(std::vector<std::uint8_t>&&);
 template py::array vector_array(std::vector<double>&&);
 
+namespace {
+
+/// A new (rows, 3) uint32 array from numpy's constructor itself: array_t's constructor allocates
+/// two vectors, for the shape and the strides, which a per-polygon call notices.
+py::array new_triangle_rows(py::ssize_t rows) {
+  auto& api = py::detail::npy_api::get();
+  const Py_intptr_t shape[2] = {rows, 3};
+  PyObject* array =
+      api.PyArray_NewFromDescr_(api.PyArray_Type_, py::dtype::of<std::uint32_t>().release().ptr(),
+                                2, shape, nullptr, nullptr, 0, nullptr);
+  if (!array) throw py::error_already_set();
+  return py::reinterpret_steal<py::array>(array);
+}
+
+}  // namespace
+
 py::array triangles_array(std::vector<Triangle>&& triangles) {
   const auto count = static_cast<py::ssize_t>(triangles.size());
   // Below this a copy costs less than a second Python object to own the vector.
   if (triangles.size() < 4096) {
-    py::array_t<std::uint32_t> array({count, py::ssize_t{3}});
+    py::array array = new_triangle_rows(count);
     if (count > 0) std::memcpy(array.mutable_data(), triangles.data(), triangles.size() * 12);
     return array;
   }

@@ -187,7 +187,7 @@ PyMethodDef triangulate_definition = {
     "triangulate(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
     "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
     "Triangulates one polygon; returns an (M, 3) uint32 array of indices into coords.\n\n"
-    "coords: an (N, 2) array-like of float64 (a C-contiguous float64 array is read in place),\n"
+    "coords: an (N, 2) array-like of float64 (a C-contiguous float64 array is not converted),\n"
     "or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings closed, in\n"
     "shapely's order). ring_ends: None (one ring), ring offsets [0, ..., N], earcut's ring ends\n"
     "[..., N] or earcut's hole indices. Raises pear.InvalidInputError (a ValueError) naming ring\n"

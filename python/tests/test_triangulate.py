@@ -25,6 +25,9 @@ def star(n, inner=0.4, hole=False):
 def test_square_with_hole_round_trip():
     triangles = pear.triangulate(SQUARE_WITH_HOLE, [4])
     assert triangles.dtype == np.uint32 and triangles.shape == (8, 3)
+    # The caller's own array: C order, writable, owning its memory (no view of pear's buffer).
+    flags = triangles.flags
+    assert flags.c_contiguous and flags.writeable and flags.owndata and triangles.base is None
     assert exact_check(SQUARE_WITH_HOLE, [0, 4, 8], triangles) == []
     assert pear.validate(SQUARE_WITH_HOLE, triangles, [4]).valid
 
