@@ -3,10 +3,12 @@
 // repeat positions. The same ear test as the general clipper (ear_test.hpp's blocks()), but
 // the strictly reflex, convex and candidate nodes are bit sets, the next ear is the candidate
 // with the smallest key (a scan of the set), and the key is read from the bits of the doubles
-// instead of computed with roots: no grid, bucket queue or pinch table to set up. Past 64
-// nodes, slabs narrow the ear test to reflex nodes near the ear and the scan to the words that
-// changed; each step still scans, so the cost per vertex grows with n: at about 512 vertices
-// the general clipper is as fast (bench_small's crossover; docs/engine.md).
+// instead of computed with roots: no grid, bucket queue or pinch table to set up. Up to 64
+// nodes the ear test takes the nodes in the ear's box from a SIMD scan of the positions
+// (box_scan's points_in_box); past 64, slabs narrow it to reflex nodes near the ear and the
+// scan to the words that changed; each step still scans, so the cost per vertex grows with n:
+// at about 512 vertices the general clipper is as fast (bench_small's crossover;
+// docs/engine.md).
 #pragma once
 
 #include <array>
