@@ -90,6 +90,12 @@ std::uint64_t scalar_in_box(const PointColumns& p, std::uint32_t count, const Bo
 }
 
 #if PEAR_BOX_SCAN_X86
+/// Whether `scan` asks for the best and the processor has AVX2 (asked once).
+bool use_avx2(BoxScan scan) {
+  static const bool has_avx2 = __builtin_cpu_supports("avx2");
+  return scan == BoxScan::best && has_avx2;
+}
+
 /// Two points a step, four with AVX2; the lanes past `count` read padding and are masked off.
 std::uint64_t sse2_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
   const __m128d x0 = _mm_set1_pd(b.x0), x1 = _mm_set1_pd(b.x1);
@@ -138,8 +144,7 @@ void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
                   std::span<std::uint64_t> meets, BoxScan scan) {
   std::fill(meets.begin(), meets.end(), 0);
 #if PEAR_BOX_SCAN_X86
-  static const bool has_avx2 = __builtin_cpu_supports("avx2");
-  if (scan == BoxScan::best && has_avx2) return avx2_rows(columns, rows, meets);
+  if (use_avx2(scan)) return avx2_rows(columns, rows, meets);
   if (scan != BoxScan::scalar) return rows_with(columns, rows, meets, sse2_meets);
 #endif
   rows_with(columns, rows, meets, scalar_meets);
@@ -148,8 +153,7 @@ void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
 std::uint64_t points_in_box(const PointColumns& points, std::uint32_t count, const Box& box,
                             BoxScan scan) {
 #if PEAR_BOX_SCAN_X86
-  static const bool has_avx2 = __builtin_cpu_supports("avx2");
-  if (scan == BoxScan::best && has_avx2) return avx2_in_box(points, count, box);
+  if (use_avx2(scan)) return avx2_in_box(points, count, box);
   if (scan != BoxScan::scalar) return sse2_in_box(points, count, box);
 #endif
   return scalar_in_box(points, count, box);

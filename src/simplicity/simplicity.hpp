@@ -25,7 +25,6 @@
 namespace pear::detail {
 
 /// The closed bounding box of an edge: exact (min and max of coordinates, no rounding).
-/// An edge's closed bounding box.
 using EdgeBox = Box;
 
 inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
