@@ -82,10 +82,10 @@ std::uint64_t first_bits(std::uint32_t count) {
 
 std::uint64_t scalar_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
   std::uint64_t in = 0;
-  for (std::uint32_t i = 0; i < count; ++i)
-    in |= static_cast<std::uint64_t>((p.x[i] >= b.x0) & (p.x[i] <= b.x1) & (p.y[i] >= b.y0) &
-                                     (p.y[i] <= b.y1))
-          << i;
+  for (std::uint32_t i = 0; i < count; ++i) {
+    const double x = p.x[i], y = p.y[i];
+    in |= static_cast<std::uint64_t>((x >= b.x0) & (x <= b.x1) & (y >= b.y0) & (y <= b.y1)) << i;
+  }
   return in;
 }
 

@@ -86,7 +86,8 @@ bool append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& 
   bool in_range = true;
   for (std::uint32_t i = begin; i < end; ++i) {
     const Point p = in.points[i];
-    in_range &= coordinate_in_range(p.x) & coordinate_in_range(p.y);
+    in_range &= coordinate_in_range(p.x);
+    in_range &= coordinate_in_range(p.y);
     out.points[kept] = p;
     out.original[kept] = i;
     kept += (p.x != last.x) | (p.y != last.y);
