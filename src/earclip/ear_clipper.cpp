@@ -170,7 +170,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
       const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
       last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
     }
-    if (remaining_ == 3) finish(anchor_);
+    finish(anchor_);
     if (pending_.empty()) return;
     // The next part of a split cycle.
     const PendingCycle part = pending_.back();
@@ -193,7 +193,8 @@ void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristi
   out_ = &out;
   heuristic_ = heuristic;
   best_effort_ = false;
-  split_budget_ = 4'000'000 + 64 * static_cast<std::size_t>(b.size());
+  fallback_budget_ = fallback_budget(b.size());
+  fallback_work_ = 0;
   // Blocks of consecutive nodes (runs of the boundary) for the queue, on boundaries past the
   // caches (see EarQueue::clear).
   queue_.clear(b.size() >= 2 * block_nodes ? (b.size() + block_nodes - 1) / block_nodes : 1);
@@ -282,7 +283,7 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
       if (p_left != UINT32_MAX) walk_.push_back(p_left);
       recheck = false;
     }
-    if (remaining_ == 3) finish(anchor_);
+    finish(anchor_);
     if (pending_.empty()) return true;
     const PendingCycle part = pending_.back();
     pending_.pop_back();

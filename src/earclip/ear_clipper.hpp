@@ -2,6 +2,7 @@
 // simple. Works on one cycle of a Boundary.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -31,6 +32,17 @@ class EarClipper {
   /// Convex, reflex and ear counts of the cycle through `entry` (nothing is clipped).
   EarStatistics statistics(Boundary& b, std::uint32_t entry);
 
+  /// Node visits and edge tests the fallbacks made in the last run: at most
+  /// fallback_budget(n) + fallback_window per removed node, linear in n (also summed over the
+  /// many small cycles of a polygon that touches itself, each clipped in a run of its own).
+  std::size_t fallback_work() const { return fallback_work_; }
+  /// Once the budget is spent, a fallback looks at this many nodes after the place where
+  /// clipping stopped instead of the whole cycle.
+  static constexpr std::size_t fallback_window = 64;
+  static std::size_t fallback_budget(std::size_t nodes) {
+    return 64 * nodes + std::min<std::size_t>(4'000'000, 4096 * nodes);
+  }
+
   /// The caller's index of the vertex where the first best-effort fallback acted.
   std::uint32_t best_effort_vertex() const { return best_effort_vertex_; }
 
@@ -56,7 +68,11 @@ class EarClipper {
   bool split_along_diagonal(std::uint32_t near);
   void split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part);
   static constexpr std::size_t split_limit = 512;
-  std::size_t split_budget_ = 0;  ///< edge tests left for diagonal searches in this run
+  /// Node visits and edge tests left to the fallbacks in this run: a boundary with no ear
+  /// anywhere (random points joined in random order) would otherwise cost a scan of the cycle
+  /// per removed node, quadratic time.
+  std::size_t fallback_budget_ = 0;
+  std::size_t fallback_work_ = 0;
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
 

@@ -30,12 +30,18 @@ bool diagonal_hits_edge(const Point& a, const Point& b, const Point& u, const Po
 ///    of a lobe of a self-touching ring) or a zero-length edge goes away without a triangle.
 /// 2. A local self-crossing (edges before and after an ear cross): clip that ear (best effort).
 /// 3. Otherwise clip the best-shaped convex corner (best effort); with none, drop a node.
+/// Every call removes a node or splits the cycle. The cycle is scanned from `near` while the
+/// run's budget lasts, then only a window after it: linear time in all.
 bool EarClipper::fall_back(std::uint32_t near) {
   Boundary& b = *b_;
   std::uint32_t crossing = UINT32_MAX, convex = UINT32_MAX;
   double best_quality = -1;
+  const std::size_t scan =
+      fallback_budget_ >= remaining_ ? remaining_ : std::min(remaining_, fallback_window);
+  fallback_budget_ -= std::min(fallback_budget_, scan);
+  fallback_work_ += scan;
   std::uint32_t v = near;
-  do {
+  for (std::size_t k = 0; k < scan; ++k) {
     const std::uint32_t p = b.prev[v], n = b.next[v];
     if (b.pos[p] == b.pos[n] || b.pos[v] == b.pos[n]) {
       const std::uint32_t gone = b.pos[v] == b.pos[n] ? n : v;
@@ -54,7 +60,8 @@ bool EarClipper::fall_back(std::uint32_t near) {
       if (q > best_quality) best_quality = q, convex = v;
     }
     v = n;
-  } while (v != near);
+    if (v == near) break;
+  }
 
   if (split_along_diagonal(near)) return true;
 
@@ -74,8 +81,9 @@ bool EarClipper::fall_back(std::uint32_t near) {
 /// FIST's split: when a valid boundary has no ear left (lobes chained at a pinch point can
 /// hide every ear), cut it along a diagonal that lies inside at both ends and meets no edge,
 /// and clip the two parts one after the other. The search is cubic, so it runs only on cycles
-/// of at most split_limit nodes and within a budget of edge tests per triangulation (bounded
-/// time on inputs that are not simple); beyond that the best-effort steps take over.
+/// of at most split_limit nodes and within the run's fallback budget (every pair of nodes and
+/// every edge test counts: bounded time on inputs that are not simple); beyond that the
+/// best-effort steps take over.
 bool EarClipper::split_along_diagonal(std::uint32_t near) {
   Boundary& b = *b_;
   if (remaining_ > split_limit) return false;
@@ -89,11 +97,15 @@ bool EarClipper::split_along_diagonal(std::uint32_t near) {
   for (std::size_t i = 0; i < m; ++i) {
     for (std::size_t j = i + 2; j < m; ++j) {
       if (i == 0 && j == m - 1) continue;  // neighbours
+      if (fallback_budget_ == 0) return false;
+      --fallback_budget_;
+      ++fallback_work_;
       const std::uint32_t a = scratch_[i], c = scratch_[j];
       const Point &pa = b.pos[a], &pc = b.pos[c];
       if (pa == pc || !b.sector_contains(a, pc) || !b.sector_contains(c, pa)) continue;
-      if (split_budget_ < m) return false;
-      split_budget_ -= m;
+      if (fallback_budget_ < m) return false;
+      fallback_budget_ -= m;
+      fallback_work_ += m;
       bool clear = true;
       for (std::size_t k = 0; k < m && clear; ++k)
         clear = !diagonal_hits_edge(pa, pc, b.pos[scratch_[k]], b.pos[b.next[scratch_[k]]]);
@@ -136,15 +148,23 @@ void EarClipper::split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first
   } while (u != a);
 }
 
-/// The last three nodes form the last triangle, unless they are degenerate.
+/// Ends the cycle being clipped: its last three nodes form its last triangle, unless they are
+/// degenerate, and every node left leaves the boundary, so that none of them, still queued, is
+/// popped as an ear of the part clipped next (it would be clipped twice and that part's count
+/// would go wrong).
 void EarClipper::finish(std::uint32_t any) {
-  if (remaining_ != 3) return;
   Boundary& b = *b_;
-  const double turn = b.turn(any);
-  if (turn > 0)
-    out_->push_back({b.vertex[b.prev[any]], b.vertex[any], b.vertex[b.next[any]]});
-  else if (turn < 0 && !best_effort_)
-    best_effort_ = true, best_effort_vertex_ = b.vertex[any];
+  if (remaining_ == 3 && alive_[any]) {
+    const double turn = b.turn(any);
+    if (turn > 0)
+      out_->push_back({b.vertex[b.prev[any]], b.vertex[any], b.vertex[b.next[any]]});
+    else if (turn < 0 && !best_effort_)
+      best_effort_ = true, best_effort_vertex_ = b.vertex[any];
+  }
+  for (std::uint32_t v = any; remaining_ > 0 && alive_[v]; v = b.next[v]) {
+    alive_[v] = 0;
+    --remaining_;
+  }
   remaining_ = 0;
 }
 
