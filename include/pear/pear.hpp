@@ -61,10 +61,14 @@ struct Options {
   /// edge flips (paper §2.4); in parallel when the algorithm is a parallel one.
   bool delaunay = false;
   /// Threads for the parallel algorithms: 0 = the executor's concurrency (pear's default
-  /// executor: all hardware threads), 1 = run everything on the calling thread.
+  /// executor: all hardware threads), 1 = run everything on the calling thread. An executor
+  /// pear makes for this count runs at most max(16, 4 x hardware threads) workers: more only
+  /// add context switches (the count still decides `partitions` when that is 0).
   unsigned threads = 0;
   /// How many parts the parallel algorithms cut the work into: 0 = the thread count; above
-  /// max_partitions (4096) counts as 4096. The output depends on the algorithm, the options and
+  /// max_partitions (4096) counts as 4096. Divide-and-conquer halves it until its split lines
+  /// make at most n/16 + 64 Steiner points (docs/parallel.md), so that no count costs more than
+  /// a small multiple of the sequential run. The output depends on the algorithm, the options and
   /// this number, never on the threads or their timing: fix it to get bit-identical results
   /// on any machine.
   unsigned partitions = 0;

@@ -37,6 +37,40 @@ void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) 
   out.close_piece();
 }
 
+/// Quantiles of the sample: the ceil(i * n / parts)-th smallest x, without repeats.
+std::vector<double> quantile_positions(const std::vector<double>& xs, unsigned parts) {
+  std::vector<double> after;
+  for (std::size_t i = 1; i < parts && !xs.empty(); ++i) {
+    const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
+    const double v = xs[m - 1];
+    if (v < xs.back() && (after.empty() || after.back() < v)) after.push_back(v);
+  }
+  return after;
+}
+
+/// The crossings of every stride-th edge of the cycle with lines placed right after each x of
+/// `after`, times the stride: an edge crosses such a line when its x range holds the x and
+/// reaches past it.
+std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner>& cycle,
+                                std::size_t stride, const std::vector<double>& after) {
+  std::vector<double> low, high;
+  for (std::size_t i = 0; i < cycle.size(); i += stride) {
+    const double x0 = b.pos[corner_index(cycle[i])].x;
+    const double x1 = b.pos[corner_index(cycle[i + 1 == cycle.size() ? 0 : i + 1])].x;
+    low.push_back(std::min(x0, x1));
+    high.push_back(std::max(x0, x1));
+  }
+  std::sort(low.begin(), low.end());
+  std::sort(high.begin(), high.end());
+  std::size_t crossings = 0;
+  // Edges starting at or before v, less those ending there too.
+  for (double v : after)
+    crossings +=
+        static_cast<std::size_t>((std::upper_bound(low.begin(), low.end(), v) - low.begin()) -
+                                 (std::upper_bound(high.begin(), high.end(), v) - high.begin()));
+  return crossings * stride;
+}
+
 }  // namespace
 
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
@@ -48,13 +82,12 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   for (std::size_t i = 0; i < cycle.size(); i += stride)
     xs.push_back(b.pos[corner_index(cycle[i])].x);
   std::sort(xs.begin(), xs.end());
-  std::vector<double> after;
-  for (std::size_t i = 1; i < parts && !xs.empty(); ++i) {
-    const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
-    const double v = xs[m - 1];
-    if (v < xs.back() && (after.empty() || after.back() < v)) after.push_back(v);
+  const std::size_t budget = max_steiner_points(cycle.size());
+  for (; parts >= 2; parts /= 2) {
+    std::vector<double> after = quantile_positions(xs, parts);
+    if (estimated_crossings(b, cycle, stride, after) <= budget) return after;
   }
-  return after;
+  return {};
 }
 
 bool PieceSplitter::place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
