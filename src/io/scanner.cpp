@@ -91,8 +91,9 @@ double Scanner::number(NumberSyntax syntax) {
 }
 
 std::size_t Scanner::count(const char* what) {
+  const std::size_t at = pos;  // the error names the number, not what follows it
   const long long value = integer(what);
-  if (value < 0) fail_expected(pos, std::string("a non-negative ") + what);
+  if (value < 0) fail_expected(at, std::string("a non-negative ") + what);
   return static_cast<std::size_t>(value);
 }
 

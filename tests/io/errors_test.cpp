@@ -213,6 +213,29 @@ TEST(PolyErrors, MissingHoleCount) {
 TEST(PolyErrors, BinaryGarbage) {
   poly_error(std::string("3\0\0", 3), 1, 2, "expected white space but found byte 0x00");
 }
+// Issue 30: a negative count was reported after the number, as "found white space".
+TEST(PolyErrors, NegativeCountsNameTheNumber) {
+  const std::string square = "4 2 0 0\n0 0 0\n1 1 0\n2 1 1\n3 0 1\n";
+  const std::string segments = "4 0\n0 0 1\n1 1 2\n2 2 3\n3 3 0\n";
+  poly_error("-5 2 0 0\n", 1, 1, "expected a non-negative vertex count but found '-5'");
+  poly_error("4 -2 0 0\n", 1, 3, "expected a non-negative dimension but found '-2'");
+  poly_error("4 2 -1 0\n", 1, 5, "expected a non-negative attribute count but found '-1'");
+  poly_error("4 2 0 -1\n", 1, 7,
+             "expected a non-negative boundary marker count (0 or 1) but found '-1'");
+  poly_error(square + "-4 0\n", 6, 1, "expected a non-negative segment count but found '-4'");
+  poly_error(square + "4 -1\n", 6, 3,
+             "expected a non-negative boundary marker count (0 or 1) but found '-1'");
+  poly_error(square + segments + "-1\n", 11, 1,
+             "expected a non-negative hole count but found '-1'");
+  poly_error(square + segments + "0\n-2\n", 12, 1,
+             "expected a non-negative regional attribute count but found '-2'");
+}
+TEST(MeshErrors, NegativeCountsNameTheNumber) {
+  expect_error([] { pear::io::read_node_ele("-3 2 0 0\n", "", "m"); }, "m (.node)", 1, 1,
+               "expected a non-negative vertex count but found '-3'");
+  expect_error([] { pear::io::read_node_ele("0 2 0 0\n", "-1 3 0\n", "m"); }, "m (.ele)", 1, 1,
+               "expected a non-negative triangle count but found '-1'");
+}
 
 TEST(ReadFile, MissingFileNamesIt) {
   try {
