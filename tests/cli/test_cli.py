@@ -8,6 +8,7 @@ bundled corpus/ (tests/support/corpus.py); without it those tests skip, and all 
 """
 import gzip
 import json
+import math
 import os
 import subprocess
 import sys
@@ -376,7 +377,7 @@ class Audit(Files):
             f.write(gzip.compress(b" " * (65 << 20)))
         r = pear("triangulate", bomb)
         self.assertEqual(r.returncode, 1)
-        self.assertIn(bomb + ": inflates past 67108864 bytes", r.stderr)
+        self.assertIn(bomb + ": gzip: inflates past 67108864 bytes", r.stderr)
 
     def test_generate_with_an_absurd_count_is_a_usage_error(self):
         r = pear("generate", "holes", "99999999999999")
@@ -410,6 +411,60 @@ class Audit(Files):
         self.assertIn(big + ": out of memory while", r.stderr)
         self.assertNotIn("std::bad_alloc", r.stderr)
         self.assertEqual([l["file"] for l in stats_lines(r)], [small])
+
+
+def star_json(points):
+    """A star polygon of `points` vertices as GeoJSON: text long enough to span deflate blocks."""
+    ring = [[round((10 if i % 2 else 4) * math.cos(i * 2 * math.pi / points), 6),
+             round((10 if i % 2 else 4) * math.sin(i * 2 * math.pi / points), 6)]
+            for i in range(points)]
+    return json.dumps({"type": "Polygon", "coordinates": [ring + [ring[0]]]})
+
+
+class Gzip(Files):
+    """Issue 30: a .gz that is truncated, corrupt or a bomb is a gzip error naming the file."""
+
+    def gz(self, name, data):
+        return self.write(name, data, "wb")
+
+    def assert_gzip_error(self, path, *phrases):
+        r = pear("triangulate", path)
+        self.assertEqual(r.returncode, 1, r.stderr)
+        [line] = r.stderr.splitlines()
+        self.assertTrue(line.startswith(path + ": gzip"), line)
+        for phrase in phrases:
+            self.assertIn(phrase, line)
+        self.assertNotIn("expected", line)  # no reader's message about inflated garbage
+
+    def test_members_are_read_one_after_another(self):
+        text = SQUARE_WITH_HOLE.encode()
+        path = self.gz("two.json.gz", gzip.compress(text[:30]) + gzip.compress(text[30:]))
+        r = pear("triangulate", "--stats", path)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(stats_lines(r)[0]["triangles"], 8)
+
+    def test_truncated_gzip_is_refused(self):
+        packed = gzip.compress(star_json(2000).encode(), mtime=0)
+        self.assertEqual(pear("triangulate", self.gz("whole.json.gz", packed)).returncode, 0)
+        for name, cut in [("no-trailer.json.gz", packed[:-8]), ("half-trailer.json.gz", packed[:-3]),
+                          ("half.json.gz", packed[:len(packed) // 2])]:
+            with self.subTest(name):
+                self.assert_gzip_error(self.gz(name, cut), "truncated")
+
+    def test_corrupt_gzip_is_refused(self):
+        packed = gzip.compress(star_json(2000).encode(), mtime=0)
+        for name, at in [("middle.json.gz", len(packed) // 2), ("crc.json.gz", len(packed) - 6),
+                         ("length.json.gz", len(packed) - 2)]:
+            with self.subTest(name):
+                flipped = bytearray(packed)
+                flipped[at] ^= 0x40
+                self.assert_gzip_error(self.gz(name, bytes(flipped)), "corrupt")
+
+    def test_a_gz_that_is_not_gzip_is_refused(self):
+        self.assert_gzip_error(self.write("plain.json.gz", SQUARE_WITH_HOLE), "not gzip data")
+        self.assert_gzip_error(self.write("empty.json.gz", ""), "not gzip data")
+        trailing = gzip.compress(SQUARE_WITH_HOLE.encode()) + b"junk"
+        self.assert_gzip_error(self.gz("trailing.json.gz", trailing), "corrupt")
 
 
 class StatsAndGenerate(Files):

@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <iterator>
 
@@ -63,6 +64,90 @@ void add(const std::string& name, std::vector<Input>& out) {
   }
 }
 
+#if PEAR_HAVE_ZLIB
+/// Inflates a .gz file into memory, member after member as gunzip does. Every failure is a
+/// ParseError that names the file and gzip: not gzip data, corrupt, truncated, or inflating past
+/// `limit` bytes (refused before more than `limit` is held in memory).
+class Gunzip {
+ public:
+  Gunzip(const std::string& name, std::size_t limit)
+      : name_(name), limit_(limit), file_(name, std::ios::binary), in_(1 << 16), out_(1 << 18) {
+    if (!file_)
+      throw io::ParseError(name, 0, 0, 0, "cannot open: " + std::string(std::strerror(errno)));
+    if (inflateInit2(&stream_, 15 + 16) != Z_OK) throw std::bad_alloc();  // +16: gzip only
+  }
+  Gunzip(const Gunzip&) = delete;
+  Gunzip& operator=(const Gunzip&) = delete;
+  ~Gunzip() { inflateEnd(&stream_); }
+
+  std::string read() {
+    if (!refill() || stream_.avail_in < 2 || in_[0] != 0x1f || in_[1] != 0x8b)
+      fail("not gzip data (it does not start with gzip's magic bytes 1f 8b)");
+    bool in_member = false;  // a member's header read, its trailer not yet
+    bool needs_input = false;
+    for (;;) {
+      if (stream_.avail_in == 0 && needs_input && !refill()) break;
+      if (!in_member && inflateReset(&stream_) != Z_OK) fail("cannot restart zlib");
+      in_member = true;
+      const int code = inflate_some();
+      if (code == Z_STREAM_END) in_member = false;
+      // inflate stopped for want of input rather than of room for its output
+      needs_input = stream_.avail_out != 0;
+      if (code == Z_STREAM_END && stream_.avail_in == 0 && !refill()) break;
+    }
+    if (in_member) fail("truncated: the file ends inside a compressed stream");
+    return std::move(text_);
+  }
+
+ private:
+  /// Reads the next block of the file; false at its end.
+  bool refill() {
+    file_.read(reinterpret_cast<char*>(in_.data()), static_cast<std::streamsize>(in_.size()));
+    if (file_.bad()) fail("cannot read the file: " + std::string(std::strerror(errno)));
+    stream_.next_in = in_.data();
+    stream_.avail_in = static_cast<uInt>(file_.gcount());
+    offset_ += stream_.avail_in;
+    return stream_.avail_in != 0;
+  }
+
+  /// One inflate call; its output is appended to the text unless that would pass the limit.
+  int inflate_some() {
+    stream_.next_out = out_.data();
+    stream_.avail_out = static_cast<uInt>(out_.size());
+    const int code = inflate(&stream_, Z_NO_FLUSH);
+    if (code == Z_MEM_ERROR) throw std::bad_alloc();
+    // Z_BUF_ERROR: no progress without more input, which the caller reads.
+    if (code != Z_OK && code != Z_STREAM_END && code != Z_BUF_ERROR)
+      fail("the data is corrupt near byte " + std::to_string(offset_ - stream_.avail_in) + ": " +
+           (stream_.msg ? stream_.msg : "zlib error " + std::to_string(code)));
+    const std::size_t produced = out_.size() - stream_.avail_out;
+    if (produced > limit_ - text_.size()) refuse();
+    text_.append(reinterpret_cast<const char*>(out_.data()), produced);
+    return code;
+  }
+
+  [[noreturn]] void refuse() const {
+    std::error_code size_error;
+    const std::uintmax_t packed = fs::file_size(name_, size_error);
+    fail("inflates past " + std::to_string(limit_) + " bytes, over " +
+         std::to_string(gzip_max_ratio) + " times its " + std::to_string(packed) +
+         ": refused as a likely decompression bomb (gunzip it to read it)");
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    throw io::ParseError(name_, 0, 0, 0, "gzip: " + what);
+  }
+
+  std::string name_;
+  std::size_t limit_;
+  std::ifstream file_;
+  std::vector<unsigned char> in_, out_;
+  z_stream stream_{};
+  std::uintmax_t offset_ = 0;  // bytes of the file read so far
+  std::string text_;
+};
+#endif
+
 std::string read_gzip(const std::string& name) {
 #if PEAR_HAVE_ZLIB
   std::error_code size_error;
@@ -70,28 +155,7 @@ std::string read_gzip(const std::string& name) {
   const std::size_t limit =
       size_error ? gzip_inflate_floor
                  : std::max<std::size_t>(gzip_inflate_floor, gzip_max_ratio * packed);
-  gzFile file = gzopen(name.c_str(), "rb");
-  if (file == nullptr)
-    throw io::ParseError(name, 0, 0, 0, std::string("cannot open: ") + std::strerror(errno));
-  std::string text;
-  char chunk[1 << 16];
-  int n = 0;
-  while ((n = gzread(file, chunk, sizeof chunk)) > 0) {
-    text.append(chunk, static_cast<std::size_t>(n));
-    if (text.size() > limit) {
-      gzclose(file);
-      throw io::ParseError(name, 0, 0, 0,
-                           "inflates past " + std::to_string(limit) + " bytes, over " +
-                               std::to_string(gzip_max_ratio) + " times its " +
-                               std::to_string(packed) +
-                               ": refused as a likely decompression bomb (gunzip it to read it)");
-    }
-  }
-  int code = 0;
-  const std::string error = n < 0 ? gzerror(file, &code) : "";
-  gzclose(file);
-  if (n < 0) throw io::ParseError(name, 0, 0, text.size(), "cannot decompress: " + error);
-  return text;
+  return Gunzip(name, limit).read();
 #else
   throw io::ParseError(name, 0, 0, 0, "this pear was built without zlib and cannot read .gz");
 #endif
