@@ -1,4 +1,5 @@
 #include <charconv>
+#include <limits>
 #include <string>
 
 #include "cli.hpp"
@@ -42,6 +43,21 @@ std::uint64_t Args::integer(std::uint64_t min, std::uint64_t max) {
                      std::to_string(min) + " to " + std::to_string(max) + ", not '" +
                      std::string(text) + "'");
   return number;
+}
+
+std::size_t Args::byte_size() {
+  const std::string_view text = value();
+  std::size_t number = 0;
+  const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), number);
+  const std::string_view unit(ptr, static_cast<std::size_t>(text.data() + text.size() - ptr));
+  const int shift = unit.empty() ? 0 : unit == "K" ? 10 : unit == "M" ? 20 : unit == "G" ? 30 : -1;
+  if (ec != std::errc() || shift < 0 || number == 0 ||
+      number > (std::numeric_limits<std::size_t>::max() >> shift))
+    throw UsageError("option " + std::string(option_) +
+                     " expects a size in bytes above 0, optionally with K, M or G (1024-based), "
+                     "not '" +
+                     std::string(text) + "'");
+  return number << shift;
 }
 
 void Args::no_value() {

@@ -35,6 +35,9 @@ class Args {
   std::string_view value();
   /// The option's value as an integer in [min, max].
   std::uint64_t integer(std::uint64_t min, std::uint64_t max);
+  /// The option's value as a positive size in bytes: digits, optionally followed by K, M or G
+  /// (1024-based).
+  std::size_t byte_size();
   /// Fails if the option just returned came with `=value`.
   void no_value();
   bool done() const { return index_ >= args_.size(); }

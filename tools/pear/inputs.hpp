@@ -27,14 +27,16 @@ struct Input {
 /// problem in order with the other files.
 std::vector<Input> expand_inputs(std::span<const std::string_view> args);
 
-/// A .gz may inflate to at most this many bytes and this many times its size (beyond both, it
-/// is refused as a likely decompression bomb): plain files of that size are read as they are.
-inline constexpr std::size_t gzip_inflate_floor = std::size_t{64} << 20;
-inline constexpr std::size_t gzip_max_ratio = 100;
+/// A .gz may inflate to at most this many bytes unless --gzip-limit says otherwise; past it, it
+/// is refused as a likely decompression bomb whatever its compressed size (a plain file of any
+/// size is read as it is).
+inline constexpr std::size_t default_gzip_limit = std::size_t{1} << 30;
 
-/// Reads and parses one input (gzip by zlib when the name ends in .gz). Throws
-/// pear::io::ParseError naming the file on any problem, the input's own problem included.
-std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options);
+/// Reads and parses one input (gzip by zlib when the name ends in .gz, refused past
+/// `gzip_limit` inflated bytes). Throws pear::io::ParseError naming the file on any problem,
+/// the input's own problem included.
+std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options,
+                                std::size_t gzip_limit);
 
 /// Progress on stderr, only when it is a terminal and there are many files; then a summary.
 class Progress {

@@ -18,6 +18,7 @@ Inputs as for 'pear triangulate' (files, directories, globs, '-', .gz).
 options:
   --json              one JSON object per polygon per line instead of a table
   --keep-small-rings  accept rings of fewer than 3 points
+  --gzip-limit SIZE   refuse a .gz that inflates past SIZE bytes (K, M, G; default 1G)
   --help              this text
 )";
 
@@ -31,6 +32,7 @@ int run_stats(std::span<const std::string_view> arguments) {
   Args args(arguments);
   bool json = false;
   io::ReadOptions read;
+  std::size_t gzip_limit = default_gzip_limit;
   while (const auto option = args.next_option()) {
     if (option == "--help" || option == "-h") {
       std::fputs(help, stdout);
@@ -38,6 +40,8 @@ int run_stats(std::span<const std::string_view> arguments) {
     } else if (option == "--json" || option == "--keep-small-rings") {
       args.no_value();
       (option == "--json" ? json : read.keep_small_rings) = true;
+    } else if (option == "--gzip-limit") {
+      gzip_limit = args.byte_size();
     } else {
       args.unknown();
     }
@@ -53,7 +57,7 @@ int run_stats(std::span<const std::string_view> arguments) {
   for (const Input& input : inputs) {
     const std::string& file = input.name;
     try {
-      const std::vector<Polygon> polygons = read_input(input, read);
+      const std::vector<Polygon> polygons = read_input(input, read, gzip_limit);
       if (polygons.empty()) throw io::ParseError(file, 0, 0, 0, "no polygon in it");
       for (std::size_t i = 0; i < polygons.size(); ++i, ++polygons_total) {
         const EarStatistics e = triangulator.ear_statistics(polygons[i]);

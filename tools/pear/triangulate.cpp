@@ -22,6 +22,7 @@ struct Settings {
   bool validate = false;
   bool stats = false;
   io::ReadOptions read;
+  std::size_t gzip_limit = default_gzip_limit;
   std::optional<std::string> output;
   std::optional<OutputFormat> format;
   std::vector<std::string_view> inputs;
@@ -58,6 +59,8 @@ options:
   --format F          obj, geojson, node (.node + .ele) or svg; else guessed from OUT's extension
   --keep-small-rings  accept rings of fewer than 3 points (as earcut's fixtures have); the
                       engine drops such holes
+  --gzip-limit SIZE   a .gz that inflates past SIZE bytes (K, M, G: KiB, MiB, GiB) is refused
+                      as a likely decompression bomb, whatever its own size (default 1G)
   --help              this text
 
 exit codes: 0 success; 1 bad input (each named on stderr, the other files still processed);
@@ -96,6 +99,8 @@ Settings parse(std::span<const std::string_view> arguments) {
       s.output = std::string(args.value());
     } else if (option == "--format") {
       s.format = parse_output_format(args.value());
+    } else if (option == "--gzip-limit") {
+      s.gzip_limit = args.byte_size();
     } else {
       args.unknown();
     }
@@ -308,7 +313,7 @@ int run_triangulate(std::span<const std::string_view> arguments) {
     std::string problem;
     std::vector<Polygon> polygons;
     try {
-      polygons = read_input(input, s.read);
+      polygons = read_input(input, s.read, s.gzip_limit);
       if (polygons.empty()) problem = display_name(input) + ": no polygon in it";
     } catch (const io::ParseError& e) {  // naming the place
       problem = e.what();
