@@ -505,6 +505,55 @@ class Gzip(Files):
         self.assertIn(path + ": gzip: inflates past 1073741824 bytes", r.stderr)
 
 
+class OutputCollisions(Files):
+    """Issue 30: -o never writes one output for two inputs, nor over an input."""
+
+    def polygon(self, *parts):
+        path = os.path.join(self.dir.name, *parts)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w") as f:
+            f.write(SQUARE_WITH_HOLE)
+        return path
+
+    def assert_refused(self, args, *names):
+        r = pear("triangulate", *args)
+        self.assertEqual(r.returncode, 2, r.stderr)
+        for name in names:
+            self.assertIn(name, r.stderr)
+        return r
+
+    def test_two_inputs_for_one_output_are_refused(self):
+        c1, c2 = self.polygon("c1", "x.json"), self.polygon("c2", "x.json")
+        out = os.path.join(self.dir.name, "out") + "/"
+        self.assert_refused([c1, c2, "-o", out, "--format", "obj"], c1, c2, "x.obj")
+        self.assertFalse(os.path.exists(os.path.join(out, "x.obj")))
+        wkt = self.write("c1/x.wkt", "POLYGON ((0 0, 1 0, 1 1, 0 0))")
+        self.assert_refused([c1, wkt, "-o", out, "--format", "node"], c1, wkt, "x.node")
+        self.assert_refused([c1, c1, "-o", out, "--format", "svg"], c1)
+        # Different names are written side by side.
+        y = self.polygon("c2", "y.json")
+        r = pear("triangulate", c1, y, "-o", out, "--format", "obj")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(sorted(os.listdir(out)), ["x.obj", "y.obj"])
+
+    def test_an_output_that_is_an_input_is_refused(self):
+        x = self.polygon("c1", "x.json")
+        self.assert_refused([x, "-o", x, "--format", "geojson"], x, "overwrite")
+        other_spelling = os.path.join(self.dir.name, "c1", "..", "c1", "x.json")
+        self.assert_refused([other_spelling, "-o", x, "--format", "geojson"], x, "overwrite")
+        link = os.path.join(self.dir.name, "link.json")
+        os.link(x, link)
+        self.assert_refused([link, "-o", x, "--format", "geojson"], x, link, "overwrite")
+        # A directory written into itself: c1/y.geojson would replace the input c1/y.geojson.
+        y = self.polygon("c1", "y.geojson")
+        c1 = os.path.dirname(x)
+        self.assert_refused([c1, "-o", c1, "--format", "geojson"], y, "overwrite")
+        self.assertFalse(os.path.exists(os.path.join(c1, "x.geojson")))
+        for path in (x, y):
+            with open(path) as f:
+                self.assertEqual(f.read(), SQUARE_WITH_HOLE)
+
+
 class StatsAndGenerate(Files):
     def test_ear_statistics(self):
         corpus.require(SOUTH_AFRICA)

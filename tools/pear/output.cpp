@@ -1,11 +1,16 @@
 #include "output.hpp"
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
+#include <set>
 #include <stdexcept>
+#include <utility>
 
 #include "cli.hpp"
 
@@ -46,6 +51,50 @@ std::string stem(const std::string& input) {
   fs::path path(input);
   if (path.extension() == ".gz") path = path.stem();
   return path.stem().string();
+}
+
+/// The files write_output writes for one input: one, or two for the node format.
+std::vector<fs::path> output_files(const OutputPlan& plan, const std::string& input) {
+  fs::path path = plan.directory
+                      ? fs::path(plan.path) / (stem(input) + std::string(extension(*plan.format)))
+                      : fs::path(plan.path);
+  if (*plan.format != OutputFormat::node) return {path};
+  path.replace_extension();  // out.node or out.ele -> out.node and out.ele
+  return {fs::path(path).concat(".node"), fs::path(path).concat(".ele")};
+}
+
+/// A file's device and inode, which every name of it shares; nullopt if it does not exist.
+std::optional<std::pair<dev_t, ino_t>> file_id(const fs::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return std::nullopt;
+  return std::pair{info.st_dev, info.st_ino};
+}
+
+/// Refuses an output file that two inputs would write (the second would silently replace the
+/// first) and one that is an input (it would be destroyed), naming the inputs.
+void check_collisions(const OutputPlan& plan, std::span<const Input> inputs) {
+  std::map<std::pair<dev_t, ino_t>, const std::string*> input_of;
+  for (const Input& input : inputs) {
+    if (input.name == "-" || !input.problem.empty()) continue;
+    if (const auto id = file_id(input.name)) input_of.emplace(*id, &input.name);
+  }
+  std::map<fs::path, const std::string*> writer_of;
+  for (const Input& input : inputs) {
+    if (!input.problem.empty()) continue;  // it is never read, so never written
+    for (const fs::path& file : output_files(plan, input.name)) {
+      const auto id = file_id(file);
+      if (const auto it = id ? input_of.find(*id) : input_of.end(); it != input_of.end())
+        throw UsageError("-o " + plan.path + (file == plan.path ? "" : ": " + file.string()) +
+                         " would overwrite the input " + *it->second);
+      std::error_code error;  // then the name as it is: the writing will say what is wrong
+      const fs::path canonical = fs::weakly_canonical(file, error);
+      const auto [it, fresh] = writer_of.emplace(error ? file : canonical, &input.name);
+      if (!fresh)
+        throw UsageError("-o " + plan.path + ": " + *it->second + " and " + input.name +
+                         " would both be written to " + file.string() +
+                         " (one output per input, named after it)");
+    }
+  }
 }
 
 /// "cannot write PATH: REASON", the reason from errno right after the failed call.
@@ -90,7 +139,7 @@ OutputFormat parse_output_format(std::string_view name) {
 }
 
 OutputPlan plan_output(const std::optional<std::string>& output, std::optional<OutputFormat> format,
-                       std::size_t inputs) {
+                       std::span<const Input> inputs) {
   OutputPlan plan;
   if (!output) {
     if (format) throw UsageError("--format needs -o OUT");
@@ -104,18 +153,20 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<O
     if (*format == OutputFormat::node)
       throw UsageError("--format node writes two files; give -o FILE");
   } else if (!plan.directory) {
-    if (inputs > 1)
+    if (inputs.size() > 1)
       throw UsageError("-o FILE takes one input; for several, give a directory (ending in '/')");
     if (!format) format = format_of(plan.path);
     if (!format)
       throw UsageError("cannot tell the format of '" + plan.path +
                        "' from its extension; give --format obj|geojson|node|svg");
-  } else {
-    if (!format) throw UsageError("-o DIRECTORY needs --format obj|geojson|node|svg");
-    fs::create_directories(plan.path, error);
-    if (error) throw UsageError("cannot create directory " + plan.path + ": " + error.message());
+  } else if (!format) {
+    throw UsageError("-o DIRECTORY needs --format obj|geojson|node|svg");
   }
   plan.format = format;
+  if (plan.path == "-") return plan;
+  check_collisions(plan, inputs);
+  if (plan.directory && !fs::create_directories(plan.path, error) && error)
+    throw UsageError("cannot create directory " + plan.path + ": " + error.message());
   return plan;
 }
 
@@ -127,20 +178,18 @@ void write_output(const OutputPlan& plan, const std::string& input,
     std::cout.flush();
     return;
   }
-  fs::path path = plan.directory
-                      ? fs::path(plan.path) / (stem(input) + std::string(extension(format)))
-                      : fs::path(plan.path);
+  const std::vector<fs::path> files = output_files(plan, input);
   if (format == OutputFormat::node) {
-    path.replace_extension();  // out.node or out.ele -> out.node and out.ele
-    std::ofstream node = open(fs::path(path).concat(".node"));
-    std::ofstream ele = open(fs::path(path).concat(".ele"));
+    std::ofstream node = open(files[0]);
+    std::ofstream ele = open(files[1]);
     io::write_node_ele(node, ele, results);
-    if (!node.flush() || !ele.flush()) cannot_write(path.string() + ".node/.ele");
+    if (!node.flush()) cannot_write(files[0].string());
+    if (!ele.flush()) cannot_write(files[1].string());
     return;
   }
-  std::ofstream out = open(path);
+  std::ofstream out = open(files[0]);
   write(format, out, input, results);
-  if (!out.flush()) cannot_write(path.string());
+  if (!out.flush()) cannot_write(files[0].string());
 }
 
 }  // namespace pear::cli

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "inputs.hpp"
 #include "pear/io.hpp"
 
 namespace pear::cli {
@@ -21,9 +22,10 @@ struct OutputPlan {
   bool directory = false;              ///< one output per input, named after it
 };
 
-/// Checks -o and --format against the number of inputs (UsageError when they do not fit).
+/// Checks -o and --format against the inputs (UsageError when they do not fit, when two inputs
+/// would write the same file, or when an output would overwrite an input).
 OutputPlan plan_output(const std::optional<std::string>& output, std::optional<OutputFormat> format,
-                       std::size_t inputs);
+                       std::span<const Input> inputs);
 
 /// Writes one input's results as the plan says. Throws std::runtime_error if it cannot.
 void write_output(const OutputPlan& plan, const std::string& input,

@@ -54,8 +54,9 @@ options:
                       only), min_angle_avg_deg, dev60_avg_deg (with --validate also valid,
                       area_rel_error)
   -o OUT              write the triangulations: one file for one input; a directory (an
-                      existing one, or a name ending in '/') for one output per input;
-                      '-' for stdout
+                      existing one, or a name ending in '/') for one output per input, named
+                      after it; '-' for stdout. Two inputs that would write the same file, or
+                      an output that would overwrite an input, are a usage error
   --format F          obj, geojson, node (.node + .ele) or svg; else guessed from OUT's extension
   --keep-small-rings  accept rings of fewer than 3 points (as earcut's fixtures have); the
                       engine drops such holes
@@ -305,7 +306,7 @@ class Group {
 int run_triangulate(std::span<const std::string_view> arguments) {
   const Settings s = parse(arguments);
   const std::vector<Input> inputs = expand_inputs(s.inputs);
-  const OutputPlan plan = plan_output(s.output, s.format, inputs.size());
+  const OutputPlan plan = plan_output(s.output, s.format, inputs);
   Progress progress(inputs.size());
   Totals totals;
   Group group;
