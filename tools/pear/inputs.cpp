@@ -146,7 +146,7 @@ class Gunzip {
 };
 #endif
 
-std::string read_gzip(const std::string& name, std::size_t limit) {
+std::string read_gzip(const std::string& name, [[maybe_unused]] std::size_t limit) {
 #if PEAR_HAVE_ZLIB
   return Gunzip(name, limit).read();
 #else
