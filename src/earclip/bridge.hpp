@@ -5,7 +5,7 @@
 #include <utility>
 #include <vector>
 
-#include "boundary.hpp"
+#include "core/boundary.hpp"
 #include "core/stage.hpp"
 #include "geometry/uniform_grid.hpp"
 

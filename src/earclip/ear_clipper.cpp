@@ -1,7 +1,7 @@
 #include "ear_clipper.hpp"
 
-#include "ear_test.hpp"
-#include "pinches.hpp"
+#include "core/ear_test.hpp"
+#include "core/pinches.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -132,7 +132,7 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// at the pop clips the same ears in the same order with about half the tests.
 void EarClipper::offer(std::uint32_t v) {
   if (!(b_->turn(v) > 0)) return;
-  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]}, v / block_nodes);
+  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]}, v / EarQueue::block_nodes);
 }
 
 /// The best queued node that is still current and an ear.
@@ -197,7 +197,9 @@ void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristi
   fallback_work_ = 0;
   // Blocks of consecutive nodes (runs of the boundary) for the queue, on boundaries past the
   // caches (see EarQueue::clear).
-  queue_.clear(b.size() >= 2 * block_nodes ? (b.size() + block_nodes - 1) / block_nodes : 1);
+  queue_.clear(b.size() >= 2 * EarQueue::block_nodes
+                   ? (b.size() + EarQueue::block_nodes - 1) / EarQueue::block_nodes
+                   : 1);
   pending_.clear();
   classify(entry, shared);
 }

@@ -7,16 +7,20 @@
 #include <cstdint>
 #include <vector>
 
-#include "boundary.hpp"
+#include "core/boundary.hpp"
+#include "core/cycle_clipper.hpp"
+#include "core/ear_queue.hpp"
+#include "core/reflex_grid.hpp"
 #include "core/stage.hpp"
-#include "ear_queue.hpp"
 #include "pear/pear.hpp"
-#include "reflex_grid.hpp"
 
 namespace pear::detail {
 
-class EarClipper {
+class EarClipper final : public CycleClipper {
  public:
+  bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) override {
+    return run(b, entry, heuristic, out);
+  }
   /// Clips the cycle through `entry` down to nothing, appending triangles (the caller's vertex
   /// indices, counterclockwise) to `out`. Returns false when a best-effort fallback had to be
   /// used: the boundary was not weakly simple, and the result may overlap.
@@ -44,7 +48,7 @@ class EarClipper {
   }
 
   /// The caller's index of the vertex where the first best-effort fallback acted.
-  std::uint32_t best_effort_vertex() const { return best_effort_vertex_; }
+  std::uint32_t best_effort_vertex() const override { return best_effort_vertex_; }
 
  private:
   void classify(std::uint32_t entry, const std::vector<std::uint8_t>* shared = nullptr);
@@ -76,10 +80,6 @@ class EarClipper {
   void finish(std::uint32_t any);
   void clip_ears(std::uint32_t entry);
 
- public:
-  static constexpr std::uint32_t block_nodes = 32768;  ///< per queue block (EarQueue::clear)
-
- private:
   bool walk_ears(std::uint32_t& entry);
   void enqueue_cycle(std::uint32_t entry);
 
@@ -113,5 +113,10 @@ class EarClipper {
   ReflexGrid grid_;
   bool grid_built_ = false;  ///< spikes are dissolved before the grid exists
 };
+
+/// A new EarClipper, for the parallel variants (MakeClipper).
+inline std::unique_ptr<CycleClipper> make_ear_clipper() {
+  return std::make_unique<EarClipper>();
+}
 
 }  // namespace pear::detail

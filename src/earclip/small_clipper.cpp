@@ -4,8 +4,8 @@
 #include <bit>
 #include <limits>
 
-#include "ear_test.hpp"
-#include "pinches.hpp"
+#include "core/ear_test.hpp"
+#include "core/pinches.hpp"
 
 namespace pear::detail {
 namespace {

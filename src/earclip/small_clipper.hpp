@@ -16,7 +16,7 @@
 #include <span>
 #include <vector>
 
-#include "boundary.hpp"
+#include "core/boundary.hpp"
 #include "core/stage.hpp"
 #include "geometry/box_scan.hpp"
 

@@ -1,6 +1,6 @@
 #include "touching.hpp"
 
-#include "pinches.hpp"
+#include "core/pinches.hpp"
 
 #include <algorithm>
 #include <bit>

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "boundary.hpp"
+#include "core/boundary.hpp"
 
 namespace pear::detail {
 

@@ -2,7 +2,7 @@
 
 #include <span>
 
-#include "earclip/ear_test.hpp"
+#include "core/ear_test.hpp"
 
 namespace pear::detail {
 
@@ -32,7 +32,7 @@ void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
   if (!own(b.prev[v]) || !own(b.next[v]) || !(b.turn(v) > 0)) return;
   queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]},
-              (v - first_node_) / EarClipper::block_nodes);
+              (v - first_node_) / EarQueue::block_nodes);
 }
 
 /// Whether popped v is an ear this chain may clip now.
@@ -106,7 +106,7 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
     lowest = std::min(lowest, s.order[i]), highest = std::max(highest, s.order[i]);
   first_node_ = lowest == UINT32_MAX ? 0 : lowest;
   const std::uint32_t span = lowest == UINT32_MAX ? 0 : highest - lowest + 1;
-  constexpr std::uint32_t block = EarClipper::block_nodes;
+  constexpr std::uint32_t block = EarQueue::block_nodes;
   queue_.clear(span >= 2 * block ? (span + block - 1) / block : 1);
   scratch_.clear();
   for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)

@@ -5,8 +5,7 @@
 
 #include <cstdint>
 
-#include "earclip/ear_clipper.hpp"
-#include "earclip/ear_queue.hpp"
+#include "core/ear_queue.hpp"
 #include "shared_boundary.hpp"
 
 namespace pear::detail {

@@ -83,9 +83,8 @@ std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners, s
 
 /// Clips every piece of a part with the sequential engine, on the rounded Steiner points.
 void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pieces& pieces,
-               EarHeuristic heuristic, PartResult& result) {
+               EarHeuristic heuristic, CycleClipper& clipper, PartResult& result) {
   Boundary piece;
-  EarClipper clipper;
   FanReducer fans;
   TriangleList local;
   for (std::size_t p = 0; p < pieces.count(); ++p) {
@@ -95,7 +94,7 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
     for (std::uint32_t i = 0; i < count; ++i) piece.add(corner_pos(b, lines, corners[i]), i);
     for (std::uint32_t i = 0; i < count; ++i) piece.link(i, i + 1 == count ? 0 : i + 1);
     local.clear();
-    if (count < 3 || !clipper.run(piece, 0, heuristic, local)) {
+    if (count < 3 || !clipper.clip(piece, 0, heuristic, local)) {
       result.ok = false;
       return;
     }
@@ -122,7 +121,8 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
 /// Redoes the triangles at Steiner points from input vertices, the holes spread over tasks.
 bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
                            const std::vector<PartResult>& parts, EarHeuristic heuristic,
-                           const RunContext& ctx, std::vector<TriangleList>& patches) {
+                           MakeClipper make_clipper, const RunContext& ctx,
+                           std::vector<TriangleList>& patches) {
   std::vector<SteinerTriangle> at_steiner;
   SteinerRepair repair;
   bool found = false;
@@ -154,7 +154,7 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
     return lo;
   };
   ctx.run_tasks("fill Steiner holes", tasks, [&](std::size_t task) {
-    HoleClipper scratch;
+    HoleClipper scratch(make_clipper);
     for (std::size_t h = first_hole(task); h < first_hole(task + 1) && ok[task]; ++h)
       ok[task] = repair.triangulate_hole(h, b, heuristic, scratch, patches[task], fills[task]);
   });
@@ -171,17 +171,19 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
 /// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.
 /// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
 bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
-                       std::vector<SplitLine>& lines, EarHeuristic heuristic, const RunContext& ctx,
-                       TriangleList& out) {
+                       std::vector<SplitLine>& lines, EarHeuristic heuristic,
+                       MakeClipper make_clipper, const RunContext& ctx, TriangleList& out) {
   std::vector<Slab> slabs;
   if (!split_into_parts(b, std::move(cycle), lines, ctx, slabs)) return false;
   std::vector<PartResult> parts(slabs.size());
-  ctx.run_tasks("clip parts", slabs.size(),
-                [&](std::size_t s) { clip_part(b, lines, slabs[s].pieces, heuristic, parts[s]); });
+  ctx.run_tasks("clip parts", slabs.size(), [&](std::size_t s) {
+    const std::unique_ptr<CycleClipper> clipper = make_clipper();
+    clip_part(b, lines, slabs[s].pieces, heuristic, *clipper, parts[s]);
+  });
   if (std::any_of(parts.begin(), parts.end(), [](const PartResult& p) { return !p.ok; }))
     return false;
   std::vector<TriangleList> patches;
-  if (!remove_steiner_points(b, lines, parts, heuristic, ctx, patches)) return false;
+  if (!remove_steiner_points(b, lines, parts, heuristic, make_clipper, ctx, patches)) return false;
   // The parts' triangles, then the holes', each copied by its own task to its place in `out`.
   std::vector<const TriangleList*> lists;
   for (const PartResult& part : parts) lists.push_back(&part.kept);
@@ -198,7 +200,7 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
 }  // namespace
 
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                        const RunContext& ctx, TriangleList& out,
+                        MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
                         std::uint32_t& best_effort_vertex) {
   std::vector<PieceCorner> cycle;
   std::vector<SplitLine> lines;
@@ -216,14 +218,15 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();
-    if (split_clip_repair(b, std::move(cycle), lines, heuristic, ctx, out)) return true;
+    if (split_clip_repair(b, std::move(cycle), lines, heuristic, make_clipper, ctx, out))
+      return true;
     out.resize(start);
     phase = "fall back to sequential";  // RunProfile shows how often this happens
   }
-  EarClipper clipper;
+  const std::unique_ptr<CycleClipper> clipper = make_clipper();
   bool complete = true;
-  ctx.run_serial(phase, [&] { complete = clipper.run(b, entry, heuristic, out); });
-  best_effort_vertex = clipper.best_effort_vertex();
+  ctx.run_serial(phase, [&] { complete = clipper->clip(b, entry, heuristic, out); });
+  best_effort_vertex = clipper->best_effort_vertex();
   return complete;
 }
 

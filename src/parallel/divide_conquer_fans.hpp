@@ -9,7 +9,8 @@
 
 #include <vector>
 
-#include "earclip/ear_clipper.hpp"
+#include "core/boundary.hpp"
+#include "core/stage.hpp"
 #include "split_pieces.hpp"
 
 namespace pear::detail {

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "earclip/ear_clipper.hpp"
+#include "core/cycle_clipper.hpp"
 #include "split_pieces.hpp"
 
 namespace pear::detail {
@@ -27,9 +27,10 @@ using SteinerTriangle = std::array<PieceCorner, 3>;
 
 /// A task's scratch memory for clipping holes.
 struct HoleClipper {
+  explicit HoleClipper(MakeClipper make) : clipper(make()) {}
   Boundary hole;
   TriangleList local;
-  EarClipper clipper;
+  std::unique_ptr<CycleClipper> clipper;
 };
 
 class SteinerRepair {

@@ -9,7 +9,7 @@
 // Rounds go on while they clip enough; the sequential engine finishes the rest.
 #include <algorithm>
 
-#include "earclip/ear_test.hpp"
+#include "core/ear_test.hpp"
 #include "shared_boundary.hpp"
 #include "variants.hpp"
 

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "earclip/pinches.hpp"
+#include "core/pinches.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {

@@ -10,9 +10,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/boundary.hpp"
+#include "core/reflex_grid.hpp"
 #include "core/stage.hpp"
-#include "earclip/boundary.hpp"
-#include "earclip/reflex_grid.hpp"
 
 namespace pear::detail {
 

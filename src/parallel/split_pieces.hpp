@@ -10,7 +10,7 @@
 #include <limits>
 #include <vector>
 
-#include "earclip/boundary.hpp"
+#include "core/boundary.hpp"
 
 namespace pear::detail {
 

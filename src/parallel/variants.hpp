@@ -4,9 +4,9 @@
 
 #include <cstdint>
 
+#include "core/boundary.hpp"
+#include "core/cycle_clipper.hpp"
 #include "core/stage.hpp"
-#include "earclip/boundary.hpp"
-#include "earclip/ear_clipper.hpp"
 
 namespace pear::detail {
 
@@ -28,8 +28,10 @@ std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& c
 /// vertical lines, triangulates the parts in parallel, and removes the Steiner points again, so
 /// that the triangles use input vertices only. Returns false when a best-effort fallback acted
 /// (the boundary was not weakly simple); best_effort_vertex then names where (caller's index).
+/// The parts, the holes the Steiner points leave and a fallback are clipped by clippers from
+/// `make_clipper` (the sequential engine).
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                        const RunContext& ctx, TriangleList& out,
+                        MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
                         std::uint32_t& best_effort_vertex);
 
 }  // namespace pear::detail

@@ -189,7 +189,8 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   std::uint32_t rest = entry;
   switch (algorithm) {
     case Algorithm::divide_and_conquer:
-      return divide_and_conquer(boundary_, entry, options.heuristic, ctx, out, best_effort_vertex);
+      return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
+                                best_effort_vertex);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out);
       break;

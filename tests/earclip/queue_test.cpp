@@ -11,7 +11,7 @@
 #include <tuple>
 #include <vector>
 
-#include "earclip/ear_queue.hpp"
+#include "core/ear_queue.hpp"
 
 namespace pear::detail {
 namespace {

@@ -20,6 +20,8 @@ class EarQueue {
   };
 
   static constexpr int bucket_count = 4096;
+  /// Nodes per block (clear's `blocks`): consecutive node numbers, a run of the boundary.
+  static constexpr std::uint32_t block_nodes = 32768;
   /// With blocks, keys are ordered in levels of 2^level_shift buckets: a level spans a factor
   /// 2^(1/4) of squared length. (Coarser levels are faster on Eurasia still, but change the
   /// order enough to thin the triangles of long corridors, a 100k spiral's by 28% at 16.)
