@@ -15,8 +15,9 @@ import sys
 ALLOWED = {
     "io": {"geometry"},
     "generate": {"geometry", "predicates"},
-    "pipeline": {"earclip", "parallel", "cdt", "simplicity", "core", "geometry", "scheduler",
-                 "predicates"},
+    "pipeline": {"clean", "earclip", "parallel", "cdt", "simplicity", "core", "geometry",
+                 "scheduler", "predicates"},
+    "clean": {"core", "geometry", "predicates"},
     # The algorithms side by side: the parallel variants reach the sequential engine through
     # core/cycle_clipper.hpp, which the pipeline hands them.
     "parallel": {"core", "geometry", "scheduler", "predicates"},

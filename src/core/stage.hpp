@@ -33,6 +33,13 @@ struct CleanPolygon {
   }
 };
 
+/// A vertex lying strictly inside an edge (exact orient2d == 0, strictly between its ends): the
+/// simplicity check finds them, cleaning splits the edges there.
+struct TJunction {
+  std::uint32_t edge;    ///< the edge from vertex `edge` to its successor in the ring
+  std::uint32_t vertex;  ///< the vertex inside it
+};
+
 /// Where a stage's tasks run, into how many parts the work is cut, and the profile that records
 /// every task's time for the work/span analysis. How to clip (the heuristic) is not here: the
 /// stages that clip take it as an argument.

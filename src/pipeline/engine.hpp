@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "clean.hpp"
+#include "clean/clean.hpp"
 #include "core/stage.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/ear_clipper.hpp"

@@ -31,12 +31,6 @@ inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
-/// A vertex lying strictly inside an edge (exact orient2d == 0, strictly between its ends).
-struct TJunction {
-  std::uint32_t edge;    ///< the edge from vertex `edge` to its successor in the ring
-  std::uint32_t vertex;  ///< the vertex inside it
-};
-
 /// What SimplicityCheck::find_t_junctions found.
 struct TJunctionSearch {
   /// Every T-junction, by edge, then from the edge's start to its end; one vertex (the smallest

@@ -15,7 +15,7 @@
 #include "pear/pear.hpp"
 #include "pear/quality.hpp"
 #include "pear/validate.hpp"
-#include "pipeline/clean.hpp"
+#include "clean/clean.hpp"
 
 namespace pear::detail {
 namespace {

@@ -13,7 +13,7 @@
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/predicates.hpp"
-#include "pipeline/clean.hpp"
+#include "clean/clean.hpp"
 #include "simplicity/simplicity.hpp"
 
 namespace pear::detail {

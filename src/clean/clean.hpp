@@ -1,11 +1,10 @@
-// Input checks and cleaning: the first stage of the pipeline (docs/architecture.md).
+// Input checks, cleaning and repairs: the first stage of the pipeline (docs/architecture.md).
 #pragma once
 
 #include <span>
 #include <vector>
 
 #include "core/stage.hpp"
-#include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
 
