@@ -93,7 +93,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   options.delaunay = true;
   options.algorithm = static_cast<pear::Algorithm>(1 + (header >> 1) % 4);
   options.threads = 1 + (header >> 3) % 3;
-  options.executor = &fuzz::shared_executor(options.threads);
+  options.executor = fuzz::shared_executor(options.threads);
   options.partitions = 1 + bytes.byte() % 8;
   const auto known = fuzz::decode_known_polygon(bytes, header & 1);
   if (!known) return 0;

@@ -31,7 +31,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     std::array<pear::Triangulation<>, 3> results;
     for (unsigned threads = 1; threads <= 3; ++threads) {
       options.threads = threads;
-      options.executor = &fuzz::shared_executor(threads);
+      options.executor = fuzz::shared_executor(threads);
       results[threads - 1] = pear::triangulate(known->polygon, options);
     }
     // Determinism first: a result that is also invalid then reports the rarer finding.

@@ -1,6 +1,9 @@
 #include "support.hpp"
 
+#include "pear/config.hpp"
+#if PEAR_HAS_THREADS
 #include "pear/scheduler.hpp"
+#endif
 
 #include <cstdio>
 #include <cstdlib>
@@ -99,11 +102,15 @@ void check_exact_triangulation(const pear::Polygon& polygon, const pear::Triangu
           "the triangles do not cover the polygon's exact area", describe(polygon));
 }
 
-pear::Executor& shared_executor(unsigned threads) {
+pear::Executor* shared_executor([[maybe_unused]] unsigned threads) {
+#if PEAR_HAS_THREADS
   static std::array<std::unique_ptr<pear::Executor>, 3> executors;
   std::unique_ptr<pear::Executor>& slot = executors.at(threads - 1);
   if (!slot) slot = std::make_unique<pear::Executor>(threads);
-  return *slot;
+  return slot.get();
+#else
+  return nullptr;
+#endif
 }
 
 std::string describe(const pear::Polygon& polygon) {

@@ -73,7 +73,7 @@ void check_exact_triangulation(const pear::Polygon& polygon, const pear::Triangu
 
 /// One executor for each thread count 1 to 3, made on first use and kept: starting threads for
 /// every input would cost more than the triangulations.
-pear::Executor& shared_executor(unsigned threads);
+pear::Executor* shared_executor(unsigned threads);
 
 /// A short text of the polygon for failure messages (first points of each ring).
 std::string describe(const pear::Polygon& polygon);

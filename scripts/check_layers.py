@@ -15,17 +15,18 @@ import sys
 ALLOWED = {
     "io": {"geometry"},
     "generate": {"geometry", "predicates"},
+    # The pipeline alone reaches the scheduler (threads_on.cpp), the stages through core/tasks.
     "pipeline": {"clean", "earclip", "parallel", "cdt", "simplicity", "core", "geometry",
                  "scheduler", "predicates"},
     "clean": {"core", "geometry", "predicates"},
     # The algorithms side by side: the parallel variants reach the sequential engine through
     # core/cycle_clipper.hpp, which the pipeline hands them.
-    "parallel": {"core", "geometry", "scheduler", "predicates"},
+    "parallel": {"core", "geometry", "predicates"},
     "earclip": {"core", "geometry", "predicates"},
-    "simplicity": {"core", "geometry", "scheduler", "predicates"},
-    "cdt": {"core", "geometry", "scheduler", "predicates"},
+    "simplicity": {"core", "geometry", "predicates"},
+    "cdt": {"core", "geometry", "predicates"},
     "validate": {"geometry", "predicates"},
-    "core": {"geometry", "scheduler", "predicates"},
+    "core": {"geometry", "predicates"},
     "geometry": {"predicates"},
     "scheduler": set(),
     "predicates": set(),

@@ -25,7 +25,7 @@
 
 #include "pear/export.hpp"
 #include "pear/geometry.hpp"
-#include "pear/pear.hpp"
+#include "pear/options.hpp"
 
 namespace pear {
 
@@ -62,25 +62,25 @@ struct BatchTriangulation {
   std::size_t size() const { return status.size(); }
 };
 
+/// triangulate_batch for an index type whose largest value is `max_index` (at most
+/// 2^32 - 1): a polygon with a point index above it is Status::index_overflow and has no
+/// triangles. The template below calls it; the triangles come as uint32_t either way.
+PEAR_API BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
+                                                             const Options& options,
+                                                             std::uint64_t max_index);
+
 /// Triangulates every polygon of the batch with `options`: Options::threads (or ::executor)
 /// says where the polygons run in parallel; the rest applies to each polygon as to one.
 /// Options::profile, when set, gets one phase whose tasks are the polygons (each one's time).
 /// Never throws for bad geometry or offsets (a status per polygon says what was wrong);
 /// std::bad_alloc can escape when memory runs out.
-namespace detail {
-/// triangulate_batch's work: indices above max_index give Status::index_overflow.
-PEAR_API BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
-                                                             const Options& options,
-                                                             std::uint64_t max_index);
-}  // namespace detail
-
 template <class Index = std::uint32_t>
 BatchTriangulation<Index> triangulate_batch(const PolygonBatch& batch,
                                             const Options& options = {}) {
   static_assert(std::is_unsigned_v<Index>, "indices are unsigned");
   constexpr auto max_index = std::min<std::uint64_t>(std::numeric_limits<Index>::max(),
                                                      std::numeric_limits<std::uint32_t>::max());
-  BatchTriangulation<std::uint32_t> wide = detail::triangulate_batch(batch, options, max_index);
+  BatchTriangulation<std::uint32_t> wide = triangulate_batch(batch, options, max_index);
   if constexpr (std::is_same_v<Index, std::uint32_t>) {
     return wide;
   } else {

@@ -103,12 +103,6 @@ enum class Issue : std::uint8_t {
   hole_inside_hole,         ///< the hole lies inside another hole (not_simple)
 };
 
-/// The most threads Options::threads may ask for.
-inline constexpr unsigned max_threads = 4096;
-/// Options::partitions above this count as this many (no variant uses more parts than the
-/// boundary has room for: partition-and-cut's chains are at least 256 nodes long).
-inline constexpr unsigned max_partitions = 4096;
-
 /// One finding about the input, naming the ring (0 = outer) and the vertex index within that ring
 /// (the caller's numbering, before any cleaning).
 struct Diagnostic {

@@ -12,9 +12,12 @@ namespace pear {
 namespace detail {
 /// Stage A's error bound, (3 + 16e)e with e = 2^-53 (Shewchuk 1997, section 4.3).
 inline constexpr double orient2d_filter_bound = (3.0 + 16.0 * 0x1p-53) * 0x1p-53;
-/// Stages B to D, for the near-collinear inputs the filter cannot decide.
-PEAR_API double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum);
 }  // namespace detail
+
+/// orient2d's stages B to D, for the near-collinear inputs its inline filter cannot decide:
+/// the exact sign of the determinant of a, b, c, given det_sum = |(a.x - c.x)(b.y - c.y)| +
+/// |(a.y - c.y)(b.x - c.x)|. Call orient2d; this is its out-of-line part.
+PEAR_API double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum);
 
 /// Twice the signed area of triangle (a, b, c), with the sign exactly right: positive if a, b, c
 /// are in counterclockwise order, negative if clockwise, zero if collinear.
@@ -28,7 +31,7 @@ inline double orient2d(const Point& a, const Point& b, const Point& c) {
   // std::fabs, not a comparison: signs are coin tosses for the branch predictor.
   const double det_sum = std::fabs(det_left) + std::fabs(det_right);
   if (std::fabs(det) >= detail::orient2d_filter_bound * det_sum) return det;
-  return detail::orient2d_adaptive(a, b, c, det_sum);
+  return orient2d_adaptive(a, b, c, det_sum);
 }
 
 /// For a, b, c in counterclockwise order: positive if d lies inside their circumcircle, negative

@@ -41,8 +41,13 @@
 #include <utility>
 #include <vector>
 
+#include "pear/config.hpp"
 #include "pear/detail/scheduler.hpp"
 #include "pear/export.hpp"
+
+#if !PEAR_HAS_THREADS
+#error "this pear was built with -Dthreads=disabled: it has no scheduler (pear/config.hpp)"
+#endif
 
 namespace pear {
 
@@ -116,7 +121,7 @@ class PEAR_API TaskGroup {
   void run(F&& task) {
     auto* job = new Closure<std::decay_t<F>>(this, std::forward<F>(task));
     pending_.add(1);
-    detail::spawn(executor_, job);
+    spawn(owner_, job);
   }
 
   /// Runs other tasks until all of this group's have finished; then rethrows the first
@@ -130,11 +135,11 @@ class PEAR_API TaskGroup {
 
  private:
   template <class F>
-  struct Closure : detail::Job {
+  struct Closure : TaskJob {
     template <class G>
     Closure(TaskGroup* owner, G&& fn)
-        : Job{&Closure::execute}, group(owner), task(std::forward<G>(fn)) {}
-    static void execute(detail::Job* job) {
+        : TaskJob{&Closure::execute}, group(owner), task(std::forward<G>(fn)) {}
+    static void execute(TaskJob* job) {
       auto* self = static_cast<Closure*>(job);
       TaskGroup& group = *self->group;
       if (!group.cancelled()) {
@@ -149,8 +154,8 @@ class PEAR_API TaskGroup {
         }
       }
       delete self;  // captures die before wait() can return
-      detail::ExecutorImpl& executor = group.executor_;
-      if (group.pending_.arrive()) detail::wake_waiters(executor);  // group may be gone now
+      Executor& executor = group.owner_;
+      if (group.pending_.arrive()) wake_waiters(executor);  // group may be gone now
     }
     TaskGroup* group;
     F task;
@@ -161,7 +166,12 @@ class PEAR_API TaskGroup {
   };
 
   void fail(std::exception_ptr error) noexcept;
+  /// What the templates above need of the executor, exported as members (nothing in
+  /// pear::detail is part of libpear's interface).
+  static void spawn(Executor& executor, TaskJob* job) noexcept;
+  static void wake_waiters(Executor& executor) noexcept;
 
+  Executor& owner_;
   detail::ExecutorImpl& executor_;
   detail::ThreadScope scope_;
   detail::WaitCounter pending_;

@@ -8,9 +8,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/tasks.hpp"
 #include "pear/geometry.hpp"
 #include "pear/pear.hpp"
-#include "pear/scheduler.hpp"
 
 namespace pear::detail {
 
@@ -44,11 +44,11 @@ struct TJunction {
 /// every task's time for the work/span analysis. How to clip (the heuristic) is not here: the
 /// stages that clip take it as an argument.
 struct RunContext {
-  Executor* executor = nullptr;  ///< nullptr: tasks run one after another on this thread
-  std::uint32_t partitions = 1;  ///< decides the output; the thread count never does
+  const TaskRunner* runner = nullptr;  ///< nullptr: tasks run one after another on this thread
+  std::uint32_t partitions = 1;        ///< decides the output; the thread count never does
   RunProfile* profile = nullptr;
 
-  bool parallel() const { return executor != nullptr && executor->concurrency() > 1; }
+  bool parallel() const { return runner != nullptr && runner->concurrency() > 1; }
 
   /// Runs task(i) for i in [0, count) in parallel and waits; records the phase when profiling.
   template <class Task>
@@ -65,7 +65,7 @@ struct RunContext {
       (*times)[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     };
     if (parallel() && count > 1)
-      parallel_for(*executor, std::size_t{0}, count, 1, timed);
+      runner->run(count, timed);
     else
       for (std::size_t i = 0; i < count; ++i) timed(i);
   }

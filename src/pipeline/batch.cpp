@@ -7,7 +7,6 @@
 
 #include "engine_pool.hpp"
 #include "pear/batch.hpp"
-#include "pear/scheduler.hpp"
 
 namespace pear {
 namespace detail {
@@ -59,7 +58,7 @@ struct Worker {
 };
 
 Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const Options& options,
-                       ExecutorChoice& where, Worker& w, ChunkResult& chunk) {
+                       Worker& w, ChunkResult& chunk) {
   w.points.clear();
   for (std::int64_t i = span.first_point; i < span.end_point; ++i)
     w.points.push_back({batch.coordinates[2 * i], batch.coordinates[2 * i + 1]});
@@ -68,7 +67,7 @@ Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const
     w.ring_offsets.push_back(static_cast<std::uint32_t>(batch.ring_offsets[r] - span.first_point));
   w.diagnostics.clear();
   DelaunayStatistics flips;
-  const Status status = w.engine->triangulate(PolygonView{w.points, w.ring_offsets}, options, where,
+  const Status status = w.engine->triangulate(PolygonView{w.points, w.ring_offsets}, options,
                                               w.triangles, w.diagnostics, flips);
   const auto base = static_cast<std::uint32_t>(span.first_point);
   for (const auto& t : w.triangles)
@@ -102,28 +101,28 @@ std::vector<std::size_t> chunk_bounds(const PolygonBatch& batch, std::size_t pol
   return bounds;
 }
 
-}  // namespace
-
-BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
-                                                    const Options& options,
-                                                    std::uint64_t max_index) {
+BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
+                                                     const Options& options,
+                                                     std::uint64_t max_index) {
   BatchTriangulation<std::uint32_t> result;
   const std::size_t polygons = batch.polygon_offsets.empty() ? 0 : batch.polygon_offsets.size() - 1;
   result.status.assign(polygons, Status::ok);
   result.triangle_offsets.assign(polygons + 1, 0);
   result.diagnostic_offsets.assign(polygons + 1, 0);
   if (polygons == 0) return result;
-  std::unique_ptr<Executor> private_executor;
-  ExecutorChoice choice(options, private_executor);
-  Executor* executor = options.threads > max_threads ? nullptr : choice.get();
-  // Inside a polygon, work goes to the same executor (nested tasks), never to a new one.
+  Workers workers;
+  const bool valid_options = options.threads <= max_threads;
+  const TaskRunner* runner = valid_options ? workers.runner(options) : nullptr;
+  // Inside a polygon, work goes to the same executor (nested tasks), never to a new one; the
+  // partitions are the batch's (0: its thread count), whatever thread a polygon runs on.
   Options per_polygon = options;
-  per_polygon.executor = executor;
-  per_polygon.threads = executor ? 0 : 1;
+  per_polygon.executor = valid_options ? workers.executor(options) : nullptr;
+  per_polygon.threads = per_polygon.executor ? 0 : 1;
+  per_polygon.partitions = options.partitions ? options.partitions : Workers::concurrency(options);
   per_polygon.profile = nullptr;
 
   const std::vector<std::size_t> bounds =
-      chunk_bounds(batch, polygons, executor ? executor->concurrency() : 1);
+      chunk_bounds(batch, polygons, runner ? runner->concurrency() : 1);
   const std::size_t chunks = bounds.size() - 1;
   std::vector<ChunkResult> parts(chunks);
   std::vector<std::int64_t> triangle_counts(polygons), diagnostic_counts(polygons);
@@ -131,8 +130,6 @@ BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
   std::vector<double> seconds(options.profile ? polygons : 0);
   const auto run_chunk = [&](std::size_t c) {
     Worker w;
-    std::unique_ptr<Executor> unused;
-    ExecutorChoice where(per_polygon, unused);
     for (std::size_t p = bounds[c]; p < bounds[c + 1]; ++p) {
       const std::size_t triangles_before = parts[c].triangles.size();
       const std::size_t diagnostics_before = parts[c].diagnostics.size();
@@ -146,7 +143,7 @@ BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
         result.status[p] =
             bad->issue == Issue::index_overflow ? Status::index_overflow : Status::invalid_input;
       } else {
-        result.status[p] = triangulate_one(batch, span, per_polygon, where, w, parts[c]);
+        result.status[p] = triangulate_one(batch, span, per_polygon, w, parts[c]);
       }
       if (options.profile)
         seconds[p] =
@@ -156,8 +153,8 @@ BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
           static_cast<std::int64_t>(parts[c].diagnostics.size() - diagnostics_before);
     }
   };
-  if (executor && chunks > 1)
-    parallel_for(*executor, std::size_t{0}, chunks, 1, run_chunk);
+  if (runner && chunks > 1)
+    runner->run(chunks, run_chunk);
   else
     for (std::size_t c = 0; c < chunks; ++c) run_chunk(c);
 
@@ -170,8 +167,8 @@ BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
     std::copy(parts[c].triangles.begin(), parts[c].triangles.end(),
               result.triangles.begin() + result.triangle_offsets[bounds[c]]);
   };
-  if (executor && chunks > 1)
-    parallel_for(*executor, std::size_t{0}, chunks, 1, gather);
+  if (runner && chunks > 1)
+    runner->run(chunks, gather);
   else
     for (std::size_t c = 0; c < chunks; ++c) gather(c);
   for (const ChunkResult& part : parts) {
@@ -183,5 +180,13 @@ BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
   return result;
 }
 
+}  // namespace
 }  // namespace detail
+
+BatchTriangulation<std::uint32_t> triangulate_batch(const PolygonBatch& batch,
+                                                    const Options& options,
+                                                    std::uint64_t max_index) {
+  return detail::triangulate_chunks(batch, options, max_index);
+}
+
 }  // namespace pear

@@ -1,7 +1,6 @@
 #include "engine.hpp"
 
 #include <algorithm>
-#include <thread>
 
 #include "cdt/delaunay.hpp"
 #include "parallel/variants.hpp"
@@ -32,34 +31,11 @@ Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitio
   return partitions == 2 ? Algorithm::divide_and_conquer : Algorithm::partition_and_cut;
 }
 
-/// The most workers a private executor gets: more than a few per hardware thread give no
-/// speed, only context switches (4,096 on 2 cores made a mark-and-cut of a 50,000-vertex star
-/// 20x slower than 16 did). The output depends on the partitions, never on the workers.
-std::uint32_t worker_limit() {
-  return std::max(16u, 4 * std::thread::hardware_concurrency());
-}
-
 bool sequential(Algorithm algorithm) {
   return algorithm == Algorithm::automatic || algorithm == Algorithm::sequential;
 }
 
 }  // namespace
-
-std::uint32_t ExecutorChoice::concurrency() const {
-  if (given_) return static_cast<std::uint32_t>(given_->concurrency());
-  if (threads_ != 0) return threads_;
-  return std::max(1u, std::thread::hardware_concurrency());
-}
-
-Executor* ExecutorChoice::get() {
-  if (given_) return given_;
-  if (threads_ == 1) return nullptr;
-  const std::uint32_t workers = std::min(threads_, worker_limit());
-  if (threads_ == 0 || workers == default_executor().concurrency()) return &default_executor();
-  if (!private_ || private_->concurrency() != workers)
-    private_ = std::make_unique<Executor>(workers);
-  return private_.get();
-}
 
 Diagnostic Engine::locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const {
   const auto ring_end =
@@ -245,9 +221,8 @@ bool Engine::triangulate_small(const Options& options, TriangleList& out) {
   return small_.run(ring_points_, ring_original_, options.heuristic, out, true);
 }
 
-Status Engine::triangulate(const PolygonView& input, const Options& options, ExecutorChoice& where,
-                           TriangleList& out, std::vector<Diagnostic>& diagnostics,
-                           DelaunayStatistics& delaunay) {
+Status Engine::triangulate(const PolygonView& input, const Options& options, TriangleList& out,
+                           std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   out.clear();
   if (options.threads > max_threads) {
     diagnostics.push_back({Issue::invalid_options, 0, 0});
@@ -268,10 +243,10 @@ Status Engine::triangulate(const PolygonView& input, const Options& options, Exe
     return Status::ok;
   }
   // Clamped before any stage sizes its work by it (a million parts once meant a million queues).
-  ctx.partitions =
-      std::min(options.partitions ? options.partitions : where.concurrency(), max_partitions);
+  ctx.partitions = std::min(options.partitions ? options.partitions : Workers::concurrency(options),
+                            max_partitions);
   if (clean_.points.size() >= parallel_threshold || !sequential(options.algorithm))
-    ctx.executor = where.get();
+    ctx.runner = workers_.runner(options);
   if (!prepare(input, options.check_simplicity, ctx, diagnostics, status)) return status;
   out.reserve(boundary_.size());
   const Algorithm algorithm =

@@ -14,33 +14,17 @@
 #include "earclip/touching.hpp"
 #include "pear/detail/flat_polygon.hpp"
 #include "simplicity/simplicity.hpp"
+#include "threading.hpp"
 
 namespace pear::detail {
-
-/// Where a run's parallel stages may run: Options::executor, or an executor for
-/// Options::threads, looked up (and for the default one, created) only when a stage needs
-/// threads. A sequential run, and every small polygon, never touches an executor.
-class ExecutorChoice {
- public:
-  ExecutorChoice(const Options& options, std::unique_ptr<Executor>& private_executor)
-      : given_(options.executor), threads_(options.threads), private_(private_executor) {}
-  /// The concurrency the executor has or will have: what `partitions` 0 stands for.
-  std::uint32_t concurrency() const;
-  /// nullptr for one thread.
-  Executor* get();
-
- private:
-  Executor* given_;
-  unsigned threads_;
-  std::unique_ptr<Executor>& private_;
-};
 
 class Engine {
  public:
   /// Triangulates `input` into `out` (cleared first).
-  Status triangulate(const PolygonView& input, const Options& options, ExecutorChoice& where,
-                     TriangleList& out, std::vector<Diagnostic>& diagnostics,
-                     DelaunayStatistics& delaunay);
+  /// Parallel stages run where Workers::runner(options) says, looked up only when a stage
+  /// needs threads: a sequential run, and every small polygon, never touches an executor.
+  Status triangulate(const PolygonView& input, const Options& options, TriangleList& out,
+                     std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   EarStatistics statistics(const PolygonView& input);
 
   /// Buffers a caller may fill and pass back as input (Triangulator's flattened rings).
@@ -48,6 +32,7 @@ class Engine {
   TriangleList& triangle_buffer() { return triangles_; }
   /// Vertices the buffers were last sized for: what keeping this engine costs.
   std::size_t footprint() const { return clean_.points.capacity() + boundary_.pos.capacity(); }
+  Workers& workers() { return workers_; }
 
  private:
   /// The small-polygon path: few vertices, no repeated position; holes are bridged first.
@@ -80,6 +65,7 @@ class Engine {
   Diagnostic why_not_valid(const PolygonView& input, bool checked, std::uint32_t vertex) const;
   Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
 
+  Workers workers_;  ///< a private executor for Options::threads, kept between runs
   FlatPolygon input_;
   TriangleList triangles_;
   CleanPolygon clean_;

@@ -1,7 +1,8 @@
 #include "engine_pool.hpp"
 
-#include <mutex>
 #include <vector>
+
+#include "threading.hpp"
 
 namespace pear::detail {
 namespace {
@@ -11,7 +12,6 @@ constexpr std::size_t kept_footprint = 1 << 16;
 constexpr std::size_t kept_engines = 64;
 
 struct Pool {
-  std::mutex mutex;
   std::vector<std::unique_ptr<Engine>> engines;
 };
 
@@ -25,7 +25,7 @@ Pool& pool() {
 std::unique_ptr<Engine> acquire_engine() {
   Pool& p = pool();
   {
-    std::lock_guard lock(p.mutex);
+    const PoolLock lock;
     if (!p.engines.empty()) {
       std::unique_ptr<Engine> engine = std::move(p.engines.back());
       p.engines.pop_back();
@@ -37,9 +37,10 @@ std::unique_ptr<Engine> acquire_engine() {
 
 void release_engine(std::unique_ptr<Engine> engine) noexcept {
   if (!engine || engine->footprint() > kept_footprint) return;
+  engine->workers().release();  // no threads kept in the pool
   Pool& p = pool();
   try {
-    std::lock_guard lock(p.mutex);
+    const PoolLock lock;
     if (p.engines.size() < kept_engines) p.engines.push_back(std::move(engine));
   } catch (...) {
     // No room to keep it: it is freed, which is all keeping would have saved.

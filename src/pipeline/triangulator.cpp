@@ -3,7 +3,6 @@
 #include "engine.hpp"
 #include "engine_pool.hpp"
 #include "pear/pear.hpp"
-#include "pear/scheduler.hpp"
 
 namespace pear {
 
@@ -16,7 +15,6 @@ Triangulator& Triangulator::operator=(Triangulator&& other) noexcept {
   if (this != &other) {
     detail::release_engine(std::move(engine_));
     engine_ = std::move(other.engine_);
-    private_executor_ = std::move(other.private_executor_);
   }
   return *this;
 }
@@ -36,8 +34,7 @@ Status Triangulator::run(const PolygonView& polygon, const Options& options,
                          std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   if (!engine_) engine_ = detail::acquire_engine();
   if (options.profile) options.profile->phases.clear();
-  detail::ExecutorChoice where(options, private_executor_);
-  return engine_->triangulate(polygon, options, where, triangles, diagnostics, delaunay);
+  return engine_->triangulate(polygon, options, triangles, diagnostics, delaunay);
 }
 
 EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {

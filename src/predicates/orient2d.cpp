@@ -21,7 +21,6 @@ constexpr double result_bound = (3.0 + 8.0 * epsilon) * epsilon;
 
 }  // namespace
 
-namespace detail {
 // Stages B to D, reached only when the filter cannot decide (near-collinear input).
 double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double det_sum) {
   const double acx = a.x - c.x;
@@ -55,7 +54,5 @@ double orient2d_adaptive(const Point& a, const Point& b, const Point& c, double 
   const Expansion<16> exact = ((head + tail_head) + head_tail) + tail_tail;
   return detail::expansion_value(exact.view());
 }
-
-}  // namespace detail
 
 }  // namespace pear

@@ -224,9 +224,6 @@ ThreadScope::~ThreadScope() {
 void spawn(ExecutorImpl& executor, Job* job) noexcept {
   executor.spawn(job);
 }
-void help_until(ExecutorImpl& executor, WaitCounter& counter) {
-  executor.help_until(counter);
-}
 void wake_waiters(ExecutorImpl& executor) noexcept {
   executor.gate.notify_all();
 }

@@ -6,8 +6,16 @@
 namespace pear {
 
 TaskGroup::TaskGroup(Executor& executor, std::stop_token stop)
-    : executor_(detail::impl_of(executor)), scope_(executor_) {
+    : owner_(executor), executor_(detail::impl_of(executor)), scope_(executor_) {
   if (stop.stop_possible()) link_.emplace(std::move(stop), CancelOnStop{this});
+}
+
+void TaskGroup::spawn(Executor& executor, TaskJob* job) noexcept {
+  detail::spawn(detail::impl_of(executor), job);
+}
+
+void TaskGroup::wake_waiters(Executor& executor) noexcept {
+  detail::wake_waiters(detail::impl_of(executor));
 }
 
 TaskGroup::~TaskGroup() {

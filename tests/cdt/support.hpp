@@ -12,9 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "pear/config.hpp"
 #include "pear/pear.hpp"
 #include "pear/predicates.hpp"
+#if PEAR_HAS_THREADS
 #include "pear/scheduler.hpp"
+#endif
 #include "pear/validate.hpp"
 #ifdef PEAR_WITH_CGAL_ORACLE
 #include "cgal_cdt.hpp"
@@ -43,13 +46,18 @@ inline const char* algorithm_name(Algorithm a) {
   }
 }
 
-/// One executor per thread count for the whole test program (threads 1: none).
-inline Executor* executor_for(unsigned threads) {
+/// One executor per thread count for the whole test program (threads 1, or a build without
+/// threads: none).
+inline Executor* executor_for([[maybe_unused]] unsigned threads) {
+#if PEAR_HAS_THREADS
   static std::map<unsigned, std::unique_ptr<Executor>> executors;
   if (threads <= 1) return nullptr;
   auto& executor = executors[threads];
   if (!executor) executor = std::make_unique<Executor>(threads);
   return executor.get();
+#else
+  return nullptr;
+#endif
 }
 
 inline Triangulation<> constrained_delaunay(const Polygon& polygon, Algorithm algorithm,

@@ -13,7 +13,6 @@
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
-#include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
 
 namespace pear {

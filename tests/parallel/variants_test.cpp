@@ -7,7 +7,6 @@
 
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
-#include "pear/scheduler.hpp"
 
 namespace pear {
 namespace {

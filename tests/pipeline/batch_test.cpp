@@ -8,9 +8,12 @@
 #include <limits>
 #include <string>
 
+#include "pear/config.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
+#if PEAR_HAS_THREADS
 #include "pear/scheduler.hpp"
+#endif
 #include "pear/validate.hpp"
 
 namespace pear {
@@ -206,6 +209,7 @@ TEST(Batch, ProfileTimesEveryPolygon) {
   EXPECT_GT(profile.work(), 0);
 }
 
+#if PEAR_HAS_THREADS
 TEST(Batch, OnTheCallersExecutor) {
   Executor executor(3);
   Options options;
@@ -218,6 +222,7 @@ TEST(Batch, OnTheCallersExecutor) {
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.triangle_offsets, b.triangle_offsets);
 }
+#endif
 
 }  // namespace
 }  // namespace pear

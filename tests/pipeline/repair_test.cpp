@@ -13,7 +13,6 @@
 #include "missing_data.hpp"
 #include "pear/io.hpp"
 #include "pear/pear.hpp"
-#include "pear/scheduler.hpp"
 #include "pear/validate.hpp"
 
 namespace pear {

@@ -10,10 +10,11 @@
 #include <numeric>
 #include <random>
 
+#include "clean/clean.hpp"
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
 #include "pear/predicates.hpp"
-#include "clean/clean.hpp"
+#include "pipeline/threading.hpp"
 #include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
@@ -124,14 +125,15 @@ CleanPolygon random_polygon(std::mt19937& rng, int rings, int max_vertices, int 
   return cleaned(polygon);
 }
 
-/// Contexts with 1, 2 and 4 threads: the answer must not depend on which.
+/// Contexts with 1, 2 and 4 threads (all on this one without threads): the answer must not
+/// depend on which.
 struct Contexts {
-  std::vector<std::unique_ptr<Executor>> executors;
+  std::vector<std::unique_ptr<Workers>> workers;
   std::vector<RunContext> list;
   Contexts() {
-    for (std::size_t threads : {1, 2, 4}) {
-      executors.push_back(std::make_unique<Executor>(threads));
-      list.push_back(RunContext{.executor = executors.back().get()});
+    for (unsigned threads : {1u, 2u, 4u}) {
+      workers.push_back(std::make_unique<Workers>());
+      list.push_back(RunContext{.runner = workers.back()->runner(Options{.threads = threads})});
     }
   }
 };

@@ -9,8 +9,11 @@
 #include "inputs.hpp"
 #include "json_line.hpp"
 #include "output.hpp"
+#include "pear/config.hpp"
 #include "pear/quality.hpp"
+#if PEAR_HAS_THREADS
 #include "pear/scheduler.hpp"
+#endif
 #include "pear/validate.hpp"
 
 namespace pear::cli {
@@ -113,7 +116,11 @@ Settings parse(std::span<const std::string_view> arguments) {
 }
 
 std::size_t thread_count(const Options& options) {
+#if PEAR_HAS_THREADS
   return options.threads ? options.threads : default_executor().concurrency();
+#else
+  return options.threads ? options.threads : 1;  // no threads: all on this one
+#endif
 }
 
 struct Totals {

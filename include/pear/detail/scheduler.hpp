@@ -16,14 +16,16 @@ namespace pear {
 
 class Executor;
 
+/// What a deque holds: one function pointer, no virtual table. execute() owns the job. (In
+/// pear, not pear::detail: TaskGroup's exported members name it.)
+struct TaskJob {
+  void (*execute)(TaskJob*);
+};
+
 namespace detail {
 class ExecutorImpl;
 struct RunState;
-
-/// What a deque holds: one function pointer, no virtual table. execute() owns the job.
-struct Job {
-  void (*execute)(Job*);
-};
+using Job = TaskJob;
 
 /// Outstanding work of a group or run, times two; bit 0 says "a waiter may be asleep".
 class WaitCounter {
@@ -41,8 +43,9 @@ class WaitCounter {
 };
 
 /// The thread's view of an executor for a scope: it owns a deque there (or uses the shared
-/// queue when all are taken). Scopes nest strictly (they live on the stack).
-class PEAR_API ThreadScope {
+/// queue when all are taken). Scopes nest strictly (they live on the stack). Made and ended
+/// only inside libpear (TaskGroup's constructor and destructor), so not exported.
+class ThreadScope {
  public:
   explicit ThreadScope(ExecutorImpl& executor);
   ~ThreadScope();
@@ -55,10 +58,10 @@ class PEAR_API ThreadScope {
   bool entered_ = false;
 };
 
-PEAR_API void spawn(ExecutorImpl& executor, Job* job) noexcept;
-PEAR_API void help_until(ExecutorImpl& executor, WaitCounter& counter);
-PEAR_API void wake_waiters(ExecutorImpl& executor) noexcept;
-PEAR_API ExecutorImpl& impl_of(Executor& executor) noexcept;
+// Inside libpear only (the templates reach them through TaskGroup's members): not exported.
+void spawn(ExecutorImpl& executor, Job* job) noexcept;
+void wake_waiters(ExecutorImpl& executor) noexcept;
+ExecutorImpl& impl_of(Executor& executor) noexcept;
 
 template <class F>
 void invoke_task(F& task, const std::stop_token& stop) {
