@@ -78,23 +78,29 @@ Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const
 }
 
 /// Chunk boundaries (polygon indices): about 16 chunks per thread of about equal vertex counts,
-/// none below a few thousand vertices (a task's overhead is a few microseconds).
+/// none below a few thousand vertices (a task's overhead is a few microseconds). The offsets
+/// are not checked yet: a polygon whose outer offsets are out of range or order weighs as one
+/// without points, and the sums saturate, so that no offset can overflow the arithmetic.
 std::vector<std::size_t> chunk_bounds(const PolygonBatch& batch, std::size_t polygons,
                                       std::size_t concurrency) {
-  const auto points_of = [&](std::size_t p) -> std::int64_t {
+  const auto rings = static_cast<std::int64_t>(batch.ring_offsets.size()) - 1;
+  const auto points = static_cast<std::int64_t>(batch.coordinates.size() / 2);
+  const auto weight = [&](std::size_t p) -> std::uint64_t {
     const std::int64_t r0 = batch.polygon_offsets[p], r1 = batch.polygon_offsets[p + 1];
-    const auto rings = static_cast<std::int64_t>(batch.ring_offsets.size()) - 1;
-    if (r0 < 0 || r1 < r0 || r1 > rings) return 0;
-    return std::max<std::int64_t>(0, batch.ring_offsets[r1] - batch.ring_offsets[r0]);
+    if (r0 < 0 || r1 < r0 || r1 > rings) return 8;
+    const std::int64_t first = batch.ring_offsets[r0], end = batch.ring_offsets[r1];
+    if (first < 0 || end < first || end > points) return 8;
+    return static_cast<std::uint64_t>(end - first) + 8;  // both in [0, points]
   };
-  std::int64_t total = 0;
-  for (std::size_t p = 0; p < polygons; ++p) total += points_of(p) + 8;
-  const std::int64_t target =
-      std::max<std::int64_t>(4096, total / static_cast<std::int64_t>(16 * concurrency));
+  constexpr std::uint64_t most = std::numeric_limits<std::uint64_t>::max();
+  const auto add = [](std::uint64_t a, std::uint64_t b) { return a > most - b ? most : a + b; };
+  std::uint64_t total = 0;
+  for (std::size_t p = 0; p < polygons; ++p) total = add(total, weight(p));
+  const std::uint64_t target = std::max<std::uint64_t>(4096, total / (16 * concurrency));
   std::vector<std::size_t> bounds{0};
-  std::int64_t filled = 0;
+  std::uint64_t filled = 0;
   for (std::size_t p = 0; p < polygons; ++p) {
-    filled += points_of(p) + 8;
+    filled = add(filled, weight(p));
     if (filled >= target && p + 1 < polygons) bounds.push_back(p + 1), filled = 0;
   }
   bounds.push_back(polygons);

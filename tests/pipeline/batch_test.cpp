@@ -152,6 +152,46 @@ TEST(Batch, BadOffsetsFailOnlyTheirPolygon) {
   EXPECT_EQ(batch.triangle_offsets[2] - batch.triangle_offsets[1], 0);
 }
 
+// Issue 30, item 2: the chunking summed and subtracted offsets before they were checked, a
+// signed overflow (undefined behaviour, UBSan halts) for offsets at the ends of int64.
+TEST(Batch, OffsetsAtTheEndsOfInt64AreInvalidNotOverflow) {
+  constexpr std::int64_t min = std::numeric_limits<std::int64_t>::min();
+  constexpr std::int64_t max = std::numeric_limits<std::int64_t>::max();
+  const std::vector<double> square{0, 0, 4, 0, 4, 4, 0, 4, 1, 1, 3, 1, 2, 3};
+  const std::vector<std::int64_t> polygon_offsets{0, 1, 2};
+  // Each: the bad ring's polygon is invalid, the other one a triangulated ring if its own
+  // offsets are good.
+  const std::vector<std::vector<std::int64_t>> bad_rings = {
+      {min, 4, 7}, {0, 4, max}, {0, max, 7}, {max, min, max}, {min, max, min}, {0, 4, min}};
+  for (const std::vector<std::int64_t>& ring_offsets : bad_rings) {
+    SCOPED_TRACE(::testing::PrintToString(ring_offsets));
+    for (unsigned threads : {1u, 2u}) {
+      Options options;
+      options.threads = threads;
+      const BatchTriangulation<> batch =
+          triangulate_batch(PolygonBatch{square, ring_offsets, polygon_offsets}, options);
+      ASSERT_EQ(batch.size(), 2u);
+      for (std::size_t p = 0; p < 2; ++p) {
+        const bool good = ring_offsets[p] >= 0 && ring_offsets[p] < ring_offsets[p + 1] &&
+                          ring_offsets[p + 1] <= 7;
+        EXPECT_EQ(batch.status[p], good ? Status::ok : Status::invalid_input) << "polygon " << p;
+        if (!good)
+          EXPECT_EQ(batch.diagnostics[batch.diagnostic_offsets[p]].issue, Issue::invalid_offsets);
+      }
+      EXPECT_EQ(batch.triangle_offsets.back(), static_cast<std::int64_t>(batch.triangles.size()));
+    }
+  }
+  // Polygon offsets at the ends of int64 too.
+  const std::vector<std::int64_t> rings{0, 4, 7};
+  for (const std::vector<std::int64_t>& polygons :
+       std::vector<std::vector<std::int64_t>>{{min, 1, max}, {0, max, 1}, {max, min}}) {
+    const BatchTriangulation<> batch = triangulate_batch(PolygonBatch{square, rings, polygons});
+    ASSERT_EQ(batch.size(), polygons.size() - 1);
+    for (std::size_t p = 0; p < batch.size(); ++p)
+      EXPECT_EQ(batch.status[p], Status::invalid_input) << "polygon " << p;
+  }
+}
+
 TEST(Batch, SlicesWhoseOffsetsDoNotStartAtZero) {
   Flat flat;
   const std::vector<Polygon> polygons = mixed_polygons();
