@@ -229,26 +229,40 @@ FlatPolygons geometry_polygons(py::handle geometry) {
 }
 
 FlatPolygons read_wkb_sequence(py::handle sequence) {
-  // Pointers into the bytes objects, which `held` keeps alive (the sequence may be a generator).
-  std::vector<std::span<const std::byte>> values;
+  // bytes are immutable: read in place, kept alive by `held` (the sequence may be a generator).
+  // A bytearray may be resized or written by another thread once the GIL is released, so its
+  // contents are copied now, while the GIL is held (issue 30: reading it in place read freed
+  // memory); the copy is a memcpy of bytes the parser reads anyway.
+  struct Value {
+    const std::byte* in_place;  // null: copied, at `offset` in `copies`
+    std::size_t offset, size;
+  };
+  std::vector<Value> places;
   std::vector<py::object> held;
+  std::vector<std::byte> copies;
   for (py::handle item : py::iter(sequence)) {
-    held.push_back(py::reinterpret_borrow<py::object>(item));
+    PyObject* object = item.ptr();
     if (item.is_none()) {
-      values.emplace_back();
-    } else if (PyBytes_Check(item.ptr())) {
-      values.push_back(std::as_bytes(std::span(
-          PyBytes_AS_STRING(item.ptr()), static_cast<std::size_t>(PyBytes_GET_SIZE(item.ptr())))));
-    } else if (PyByteArray_Check(item.ptr())) {
-      values.push_back(
-          std::as_bytes(std::span(PyByteArray_AS_STRING(item.ptr()),
-                                  static_cast<std::size_t>(PyByteArray_GET_SIZE(item.ptr())))));
+      places.push_back({nullptr, copies.size(), 0});
+    } else if (PyBytes_Check(object)) {
+      held.push_back(py::reinterpret_borrow<py::object>(item));
+      places.push_back({reinterpret_cast<const std::byte*>(PyBytes_AS_STRING(object)), 0,
+                        static_cast<std::size_t>(PyBytes_GET_SIZE(object))});
+    } else if (PyByteArray_Check(object)) {
+      const auto* bytes = reinterpret_cast<const std::byte*>(PyByteArray_AS_STRING(object));
+      const auto size = static_cast<std::size_t>(PyByteArray_GET_SIZE(object));
+      places.push_back({nullptr, copies.size(), size});
+      copies.insert(copies.end(), bytes, bytes + size);
     } else {
-      throw py::type_error("geometry " + std::to_string(values.size()) +
+      throw py::type_error("geometry " + std::to_string(places.size()) +
                            " is not WKB (bytes, bytearray or None) but " +
                            std::string(py::str(py::type::handle_of(item).attr("__name__"))));
     }
   }
+  std::vector<std::span<const std::byte>> values;
+  values.reserve(places.size());
+  for (const Value& v : places)
+    values.emplace_back(v.in_place ? v.in_place : copies.data() + v.offset, v.size);
   FlatPolygons flat;
   std::string error;
   std::size_t index = 0, offset = 0;
