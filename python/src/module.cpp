@@ -203,11 +203,18 @@ py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::hand
   const Options options =
       make_options({algorithm, heuristic, delaunay, check_simplicity, threads, partitions});
   const Coordinates points = as_coordinates(coords);
-  const auto rings = as_offsets(ring_offsets, "ring_offsets");
-  const auto polygons = as_offsets(polygon_offsets, "polygon_offsets");
+  // The offsets decide which addresses are read: they are copied while the GIL is held, so
+  // that another thread writing the caller's arrays cannot change one between its check and
+  // its use (issue 30). Coordinates are only values, read in place: each polygon's points are
+  // copied into a worker's buffer before they are triangulated.
+  const auto offsets = [](py::handle values, const char* name) {
+    const auto array = as_offsets(values, name);
+    return std::vector<std::int64_t>(array.data(), array.data() + array.shape(0));
+  };
+  const std::vector<std::int64_t> rings = offsets(ring_offsets, "ring_offsets");
+  const std::vector<std::int64_t> polygons = offsets(polygon_offsets, "polygon_offsets");
   const PolygonBatch batch{std::span(points.data(), static_cast<std::size_t>(2 * points.shape(0))),
-                           std::span(rings.data(), static_cast<std::size_t>(rings.shape(0))),
-                           std::span(polygons.data(), static_cast<std::size_t>(polygons.shape(0)))};
+                           rings, polygons};
   BatchTriangulation<> result;
   std::vector<std::uint8_t> status, issues;
   std::vector<std::int64_t> diagnostic_rings, diagnostic_vertices;

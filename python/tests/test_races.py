@@ -65,3 +65,34 @@ def test_bytearray_resized_while_its_wkb_is_parsed():
                 coords = result.coordinates[points[g]:points[g + 1]]
                 assert len(coords) in states, f"geometry {g}: {len(coords)} points"
                 assert np.array_equal(coords, states[len(coords)]), f"geometry {g}"
+
+
+def test_offsets_written_while_the_batch_runs():
+    # Before the fix triangulate_many read the caller's int64 offsets in place with the GIL
+    # released: a polygon's offsets were checked, then read again to copy its points, and the
+    # writer's shifted state between the two sent the copy 2^40 points before the array
+    # (a segmentation fault in each of 10 runs of this test).
+    n = 20000
+    coords = np.tile([[0, 0], [1, 0], [1, 1], [0, 1.0]], (n, 1))
+    rings = np.arange(0, 4 * n + 1, 4, dtype=np.int64)
+    polygons = np.arange(n + 1, dtype=np.int64)
+    good, shifted = rings.copy(), rings - 2**40
+
+    def write():
+        rings[:] = shifted
+        rings[:] = good
+
+    with Writer(write):
+        for _ in range(300):
+            result = pear.triangulate_many(coords, rings, polygons, threads=1)
+            # Whatever mix of the two states the call read: a polygon with good offsets is its
+            # own square, one with shifted offsets is invalid_offsets; nothing else.
+            ok = result.status == pear.Status.ok
+            assert np.all(ok | (result.status == pear.Status.invalid_input))
+            assert np.all(np.diff(result.triangle_offsets) == np.where(ok, 2, 0))
+            owner = np.repeat(np.arange(n), np.diff(result.triangle_offsets))
+            assert np.all(result.triangles // 4 == owner[:, None])
+            issues = result.diagnostic_issue[result.diagnostic_offsets[:-1][~ok]]
+            if len(issues):  # each bad polygon's first finding: invalid_offsets
+                assert result.diagnostics(int(np.argmin(ok)))[0].issue == "invalid_offsets"
+                assert np.all(issues == issues[0])
