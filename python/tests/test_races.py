@@ -45,7 +45,8 @@ def test_bytearray_resized_while_its_wkb_is_parsed():
     # Before the fix triangulate_many parsed a bytearray's buffer in place with the GIL
     # released. The writer resizes the value between two WKB polygons, which frees its buffer,
     # and fills a buffer of the freed size with 0xff: the parse read mixed or freed bytes
-    # (wrong coordinates, "byte order 255", "geometry type 14191") in about 1 call in 4 (every one of 10 runs of this test failed).
+    # (wrong coordinates, "byte order 255", "geometry type 14191") in about 1 call in 4, and
+    # each of 10 runs of this test failed.
     first, second = line(3000, 0), line(2500, 1)
     states = {len(p.exterior.coords): np.array(p.exterior.coords) for p in (first, second)}
     value = bytearray(first.wkb)
