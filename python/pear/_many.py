@@ -128,7 +128,12 @@ def _wkb_values(geometries):
     if isinstance(geometries, (bytes, bytearray)) or hasattr(type(geometries), "wkb"):
         geometries = [geometries]
     if not isinstance(geometries, (list, np.ndarray)):
-        geometries = list(geometries)
+        try:
+            geometries = list(geometries)
+        except TypeError:
+            raise TypeError("data must be an (N, 2) array with offsets, or a sequence of "
+                            f"geometries, WKB values or None, not {type(geometries).__name__}"
+                            ) from None
     # WKB goes to the module as it is (it names any element that is not WKB): a Python test of
     # every element would cost a tenth of a small polygon's triangulation.
     first = next((v for v in geometries if v is not None), None)
@@ -145,7 +150,7 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
     scheduler, the GIL released; returns a BatchResult. Never raises for bad geometry: each
     polygon has a status (BatchResult.check() raises as triangulate would).
 
-    data: an (N, 2) float64 array with ring_offsets and polygon_offsets (shapely 2's
+    data: an (N, 2) float64 array with integer ring_offsets and polygon_offsets (shapely 2's
     to_ragged_array layout: ``triangulate_many(coords, *offsets)``; geometry_offsets for
     MultiPolygons); or a sequence of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or
     MultiPolygon, any byte order, ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.
@@ -161,13 +166,14 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
         if polygon_offsets is None:
             raise TypeError("ring_offsets needs polygon_offsets (one polygon: [0, rings])")
         coords = data
-        ring_offsets = np.asarray(ring_offsets, dtype=np.int64)
-        polygon_offsets = np.asarray(polygon_offsets, dtype=np.int64)
+        # Integers only, by the module's rules: 4.5 is not truncated to 4 (docs/python.md).
+        ring_offsets = _pear.as_offsets(ring_offsets, "ring_offsets")
+        polygon_offsets = _pear.as_offsets(polygon_offsets, "polygon_offsets")
         polygons = max(len(polygon_offsets) - 1, 0)
         if geometry_offsets is None:
             geometry_offsets = np.arange(polygons + 1, dtype=np.int64)
-        geometry_offsets = np.asarray(geometry_offsets, dtype=np.int64)
-        if (geometry_offsets.ndim != 1 or len(geometry_offsets) == 0 or geometry_offsets[0] != 0
+        geometry_offsets = _pear.as_offsets(geometry_offsets, "geometry_offsets")
+        if (len(geometry_offsets) == 0 or geometry_offsets[0] != 0
                 or geometry_offsets[-1] != polygons or np.any(np.diff(geometry_offsets) < 0)):
             raise ValueError(f"geometry_offsets must rise from 0 to the {polygons} polygons")
     arrays = _pear.triangulate_batch(coords, ring_offsets, polygon_offsets, **options)

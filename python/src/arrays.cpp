@@ -2,9 +2,16 @@
 #include "arrays.hpp"
 
 #include <cstring>
+#include <limits>
 #include <string>
 
 namespace pear::python {
+
+namespace {
+std::string type_name(py::handle value) {
+  return py::str(py::type::handle_of(value).attr("__name__"));
+}
+}  // namespace
 
 Options make_options(const OptionArguments& arguments) {
   const auto [algorithm, heuristic, delaunay, check_simplicity, threads, partitions] = arguments;
@@ -29,13 +36,6 @@ Options make_options(const OptionArguments& arguments) {
     options.heuristic = EarHeuristic::fast;
   else
     throw py::value_error("heuristic '" + std::string(heuristic) + "' is not one of top, fast");
-  if (threads < 0 || threads > long{max_threads})
-    throw py::value_error("threads " + std::to_string(threads) + " is not between 0 (all) and " +
-                          "pear's limit of " + std::to_string(max_threads));
-  if (partitions < 0 || partitions > long{max_threads})
-    throw py::value_error("partitions " + std::to_string(partitions) +
-                          " is not between 0 (the thread count) and " +
-                          std::to_string(max_threads));
   options.delaunay = delaunay;
   options.threads = static_cast<unsigned>(threads);
   options.partitions = static_cast<unsigned>(partitions);
@@ -43,15 +43,141 @@ Options make_options(const OptionArguments& arguments) {
   return options;
 }
 
-Coordinates as_coordinates(py::handle coords, const char* name) {
-  // The common case first: an array as it is needed is borrowed, not converted.
-  auto array = py::isinstance<Coordinates>(coords) ? py::reinterpret_borrow<Coordinates>(coords)
-                                                   : Coordinates::ensure(coords);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error(std::string(name) + " must be an (N, 2) array of numbers, not " +
-                         std::string(py::str(py::type::handle_of(coords).attr("__name__"))));
+bool option_argument(OptionArguments& a, std::string_view name, py::handle value) {
+  constexpr long limit = max_threads;
+  if (name == "algorithm")
+    a.algorithm = string_argument(value, "algorithm");
+  else if (name == "heuristic")
+    a.heuristic = string_argument(value, "heuristic");
+  else if (name == "delaunay")
+    a.delaunay = bool_argument(value, "delaunay");
+  else if (name == "check_simplicity")
+    a.check_simplicity = bool_argument(value, "check_simplicity");
+  else if (name == "threads")
+    a.threads = count_argument(value, "threads", limit, " (all)", "pear's limit of ");
+  else if (name == "partitions")
+    a.partitions =
+        count_argument(value, "partitions", limit, " (the thread count)", "pear's limit of ");
+  else
+    return false;
+  return true;
+}
+
+std::string_view string_argument(py::handle value, const char* name) {
+  Py_ssize_t size = 0;
+  const char* text =
+      PyUnicode_Check(value.ptr()) ? PyUnicode_AsUTF8AndSize(value.ptr(), &size) : nullptr;
+  if (!text) {
+    if (PyErr_Occurred()) throw py::error_already_set();  // a str that is not UTF-8
+    throw py::type_error(std::string(name) + " must be a str, not " + type_name(value));
   }
+  return {text, static_cast<std::size_t>(size)};
+}
+
+bool bool_argument(py::handle value, const char* name) {
+  if (value.ptr() == Py_True) return true;
+  if (value.ptr() == Py_False) return false;
+  if (py::isinstance(value, py::module_::import("numpy").attr("bool_")))
+    return PyObject_IsTrue(value.ptr()) == 1;
+  throw py::type_error(std::string(name) + " must be a bool, not " + type_name(value));
+}
+
+long count_argument(py::handle value, const char* name, long most, const char* zero,
+                    const char* limit) {
+  if (PyBool_Check(value.ptr()) || !PyIndex_Check(value.ptr()))
+    throw py::type_error(std::string(name) + " must be an int, not " + type_name(value));
+  const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+  if (!number) throw py::error_already_set();
+  int overflow = 0;
+  const long count = PyLong_AsLongAndOverflow(number.ptr(), &overflow);
+  if (count == -1 && PyErr_Occurred()) throw py::error_already_set();
+  if (overflow != 0 || count < 0 || count > most)
+    throw py::value_error(std::string(name) + " " + std::string(py::str(number)) +
+                          " is not between 0" + zero + " and " + limit + std::to_string(most));
+  return count;
+}
+
+namespace {
+
+/// What numpy makes of `value` with no dtype asked, not 0-d. `expected` says what the argument
+/// must be, for the TypeError of a scalar or None.
+py::array any_array(py::handle value, const char* name, const char* expected) {
+  py::array array;
+  if (py::isinstance<py::array>(value)) {
+    array = py::reinterpret_borrow<py::array>(value);
+  } else {
+    auto& api = py::detail::npy_api::get();
+    PyObject* made = api.PyArray_FromAny_(value.ptr(), nullptr, 0, 0,
+                                          py::detail::npy_api::NPY_ARRAY_ENSUREARRAY_, nullptr);
+    if (!made) {
+      // A ragged list is a shape, anything else numpy refuses a type.
+      const bool shape = PyErr_ExceptionMatches(PyExc_ValueError);
+      const py::error_already_set error;
+      if (shape)
+        throw py::value_error(std::string(name) +
+                              " is not an array: " + std::string(py::str(error.value())));
+      throw py::type_error(std::string(name) + " must be " + expected + ", not " +
+                           type_name(value));
+    }
+    array = py::reinterpret_steal<py::array>(made);
+  }
+  if (array.ndim() == 0)
+    throw py::type_error(std::string(name) + " must be " + expected + ", not " + type_name(value));
+  return array;
+}
+
+std::string dtype_name(const py::array& array) {
+  return py::str(array.dtype());
+}
+
+/// "name[i]" or "name[i, j]" for entry `flat` of a C-ordered array.
+std::string entry_name(const char* name, const py::array& array, py::ssize_t flat) {
+  std::string index;
+  for (py::ssize_t d = array.ndim() - 1; d >= 0; --d) {
+    index = std::to_string(flat % array.shape(d)) + (index.empty() ? "" : ", ") + index;
+    flat /= array.shape(d);
+  }
+  return std::string(name) + "[" + index + "]";
+}
+
+/// An object array's elements as int64: each a Python or numpy int (not a bool) that fits.
+Integers integers_from_objects(const py::array& objects, const char* name) {
+  Integers out(std::vector<py::ssize_t>(objects.shape(), objects.shape() + objects.ndim()));
+  const py::object integer = py::module_::import("numpy").attr("integer");
+  const py::list items = objects.attr("ravel")().attr("tolist")();
+  std::int64_t* values = out.mutable_data();
+  for (py::ssize_t i = 0; i < static_cast<py::ssize_t>(items.size()); ++i) {
+    const py::handle item = items[i];
+    if (PyBool_Check(item.ptr()) || !(PyLong_Check(item.ptr()) || py::isinstance(item, integer)))
+      throw py::type_error(std::string(name) + " must be integers, not " + type_name(item));
+    int overflow = 0;
+    const auto number = py::reinterpret_steal<py::object>(PyNumber_Index(item.ptr()));
+    if (!number) throw py::error_already_set();
+    const long long value = PyLong_AsLongLongAndOverflow(number.ptr(), &overflow);
+    if (overflow != 0)
+      throw py::value_error(entry_name(name, objects, i) + " = " + std::string(py::str(item)) +
+                            " does not fit in int64");
+    values[i] = value;
+  }
+  return out;
+}
+
+}  // namespace
+
+Coordinates as_real_array(py::handle value, const char* name) {
+  // The common case first: an array as it is needed is borrowed, not converted.
+  if (py::isinstance<Coordinates>(value) && py::reinterpret_borrow<py::array>(value).ndim() > 0)
+    return py::reinterpret_borrow<Coordinates>(value);
+  const py::array array = any_array(value, name, "an array-like of numbers");
+  const char kind = array.dtype().kind();
+  if (kind != 'i' && kind != 'u' && kind != 'f')
+    throw py::type_error(std::string(name) + " must be real numbers (an integer or floating " +
+                         "dtype), not " + dtype_name(array));
+  return Coordinates::ensure(array);
+}
+
+Coordinates as_coordinates(py::handle coords, const char* name) {
+  Coordinates array = as_real_array(coords, name);
   if (array.ndim() != 2 || array.shape(1) != 2) {
     std::string shape;
     for (py::ssize_t d = 0; d < array.ndim(); ++d)
@@ -61,14 +187,32 @@ Coordinates as_coordinates(py::handle coords, const char* name) {
   return array;
 }
 
-py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> as_offsets(py::handle values,
-                                                                                const char* name) {
-  auto array = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(values);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error(std::string(name) + " must be a 1-D array of integers");
+Integers as_integers(py::handle value, const char* name) {
+  if (py::isinstance<Integers>(value) && py::reinterpret_borrow<py::array>(value).ndim() > 0)
+    return py::reinterpret_borrow<Integers>(value);
+  const py::array array = any_array(value, name, "an array-like of integers");
+  const char kind = array.dtype().kind();
+  if (array.size() == 0)  // [] is float64 to numpy, and nothing to convert
+    return Integers(std::vector<py::ssize_t>(array.shape(), array.shape() + array.ndim()));
+  if (kind == 'O') return integers_from_objects(array, name);
+  if (kind != 'i' && kind != 'u')
+    throw py::type_error(std::string(name) + " must be integers, not " + dtype_name(array));
+  if (kind == 'u' && array.itemsize() == 8) {
+    using Unsigned = py::array_t<std::uint64_t, py::array::c_style | py::array::forcecast>;
+    const Unsigned values = Unsigned::ensure(array);
+    for (py::ssize_t i = 0; i < values.size(); ++i)
+      if (values.data()[i] > std::uint64_t{std::numeric_limits<std::int64_t>::max()})
+        throw py::value_error(entry_name(name, array, i) + " = " +
+                              std::to_string(values.data()[i]) + " does not fit in int64");
   }
-  if (array.ndim() != 1) throw py::value_error(std::string(name) + " must be one-dimensional");
+  return Integers::ensure(array);
+}
+
+Integers as_offsets(py::handle values, const char* name) {
+  Integers array = as_integers(values, name);
+  if (array.ndim() != 1)
+    throw py::value_error(std::string(name) + " must be one-dimensional, not " +
+                          std::to_string(array.ndim()) + "-dimensional");
   return array;
 }
 
@@ -156,12 +300,7 @@ py::array triangles_array(std::vector<Triangle>&& triangles) {
 }
 
 std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points) {
-  using Indices = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
-  auto array = Indices::ensure(triangles);
-  if (!array) {
-    PyErr_Clear();
-    throw py::type_error("triangles must be an (M, 3) array of integers");
-  }
+  const Integers array = as_integers(triangles, "triangles");
   if (array.ndim() != 2 || array.shape(1) != 3)
     throw py::value_error("triangles must have shape (M, 3)");
   std::vector<Triangle> out(static_cast<std::size_t>(array.shape(0)));

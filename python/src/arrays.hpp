@@ -27,14 +27,32 @@ struct OptionArguments {
   bool delaunay = false, check_simplicity = true;
   long threads = 0, partitions = 0;
 };
-/// Options from them. Unknown names raise ValueError listing the known ones; counts out of
-/// range raise ValueError.
+/// Options from them. Unknown names raise ValueError listing the known ones.
 Options make_options(const OptionArguments& arguments);
+/// Reads the keyword argument `name` into `arguments` by the rules below (a str, a bool, a
+/// count in range); false when `name` is not one of the options.
+bool option_argument(OptionArguments& arguments, std::string_view name, py::handle value);
 
-/// `coords` as a C-contiguous (N, 2) float64 array: the caller's own array when it is one
-/// already (no copy), else numpy's conversion of it. Raises ValueError for another shape and
-/// TypeError for what numpy cannot convert.
+// How arguments are read (docs/python.md, "How arguments are read"): an array-like is what
+// numpy makes of it with no dtype asked; a scalar or None is not one (TypeError), nor is an
+// array whose dtype is not the kind asked for (TypeError); a shape or value out of range is a
+// ValueError. Every message names the argument.
+
+using Integers = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>;
+
+/// `value` as a C-contiguous float64 array of any shape (not 0-d): the caller's own array when
+/// it is one already (no copy), else numpy's conversion of an integer or floating array.
+/// Complex, bool, str, bytes, datetime and object arrays raise TypeError, not a cast.
+Coordinates as_real_array(py::handle value, const char* name);
+/// as_real_array, then shape (N, 2) or ValueError.
 Coordinates as_coordinates(py::handle coords, const char* name = "coords");
+
+/// `value` as a C-contiguous int64 array of any shape (not 0-d): an integer dtype only (floats,
+/// even 4.0, and bool raise TypeError, as numpy's indexing does); values int64 cannot hold
+/// raise ValueError naming the entry. An empty array-like is empty whatever its dtype.
+Integers as_integers(py::handle value, const char* name);
+/// as_integers, one-dimensional (else ValueError): offsets and ring ends.
+Integers as_offsets(py::handle values, const char* name);
 
 /// The ring offsets (0, ..., n) of a polygon of n points from `ring_ends`: None (one ring), ring
 /// offsets, earcut's ring ends (mapbox_earcut: each ring's end, the last n) or earcut.js' hole
@@ -42,9 +60,14 @@ Coordinates as_coordinates(py::handle coords, const char* name = "coords");
 /// naming the entry that is out of order or range.
 void ring_offsets_from(py::handle ring_ends, std::size_t n, std::vector<std::uint32_t>& offsets);
 
-/// An int64 1-D array from any array-like, without a copy when it is one already.
-py::array_t<std::int64_t, py::array::c_style | py::array::forcecast> as_offsets(py::handle values,
-                                                                                const char* name);
+/// A str option (TypeError for anything else).
+std::string_view string_argument(py::handle value, const char* name);
+/// A flag: True, False or numpy.bool_ (TypeError for anything else: "no" is not False).
+bool bool_argument(py::handle value, const char* name);
+/// A count: an int (or anything with __index__ but bool) in [0, most], else TypeError or
+/// ValueError "NAME VALUE is not between 0ZERO and LIMITMOST" (what 0 and `most` mean).
+long count_argument(py::handle value, const char* name, long most, const char* zero = "",
+                    const char* limit = "");
 
 /// Triangles as an (M, 3) uint32 array: a copy for few triangles, else the vector itself, moved
 /// into the array's owner.

@@ -1,6 +1,7 @@
 // pear.validate, pear.quality and the exact predicates orient2d and incircle.
 #include <pybind11/stl.h>
 
+#include <limits>
 #include <string>
 
 #include "arrays.hpp"
@@ -24,6 +25,10 @@ PolygonInput polygon_input(py::handle polygon, py::handle ring_ends) {
     if (!ring_ends.is_none())
       throw py::type_error("ring_ends goes with coordinates, not with a shapely geometry");
     const FlatPolygons flat = geometry_polygons(polygon);
+    if (flat.polygon_offsets.size() == 1) {  // an empty geometry: as empty coordinates
+      in.ring_offsets.assign(1, 0);
+      return in;
+    }
     if (flat.polygon_offsets.size() != 2)
       throw py::value_error("validate takes one Polygon; this geometry has " +
                             std::to_string(flat.polygon_offsets.size() - 1) + " polygons");
@@ -33,7 +38,7 @@ PolygonInput polygon_input(py::handle polygon, py::handle ring_ends) {
       in.ring_offsets.push_back(static_cast<std::uint32_t>(offset));
     return in;
   }
-  const Coordinates array = as_coordinates(polygon);
+  const Coordinates array = as_coordinates(polygon, "polygon");
   const auto n = static_cast<std::size_t>(array.shape(0));
   for (std::size_t i = 0; i < n; ++i) in.points.push_back({array.at(i, 0), array.at(i, 1)});
   ring_offsets_from(ring_ends, n, in.ring_offsets);
@@ -56,15 +61,16 @@ std::vector<Point> points_of(py::handle coords) {
 }
 
 ValidationReport validate_triangles(py::handle polygon, py::handle triangles, py::handle ring_ends,
-                                    bool check_delaunay, bool allow_zero_area, bool check_count,
-                                    std::size_t max_messages) {
+                                    py::handle check_delaunay, py::handle allow_zero_area,
+                                    py::handle check_count, py::handle max_messages) {
+  ValidateOptions options;
+  options.check_delaunay = bool_argument(check_delaunay, "check_delaunay");
+  options.allow_zero_area = bool_argument(allow_zero_area, "allow_zero_area");
+  options.check_count = bool_argument(check_count, "check_count");
+  options.max_messages = static_cast<std::size_t>(
+      count_argument(max_messages, "max_messages", std::numeric_limits<long>::max()));
   const PolygonInput in = polygon_input(polygon, ring_ends);
   const std::vector<Triangle> indices = triangles_from(triangles, in.points.size());
-  ValidateOptions options;
-  options.check_delaunay = check_delaunay;
-  options.allow_zero_area = allow_zero_area;
-  options.check_count = check_count;
-  options.max_messages = max_messages;
   py::gil_scoped_release release;
   return validate(PolygonView{in.points, in.ring_offsets}, indices, options);
 }
@@ -83,18 +89,15 @@ py::object predicate(const std::array<py::handle, Arity>& args, Predicate f) {
   std::array<Coordinates, Arity> arrays;
   std::array<bool, Arity> single{};
   py::ssize_t n = -1;
+  static constexpr const char* names[] = {"a", "b", "c", "d"};
   for (std::size_t k = 0; k < Arity; ++k) {
-    auto array = Coordinates::ensure(args[k]);
-    if (!array) {
-      PyErr_Clear();
-      throw py::type_error("points must be pairs of numbers or (N, 2) arrays of them");
-    }
+    auto array = as_real_array(args[k], names[k]);
     single[k] = array.ndim() == 1;
     if (single[k] && array.shape(0) != 2)
-      throw py::value_error("a point must have 2 coordinates, not " +
+      throw py::value_error(std::string(names[k]) + " must have 2 coordinates, not " +
                             std::to_string(array.shape(0)));
     if (!single[k]) {
-      array = as_coordinates(array, "a point array");
+      array = as_coordinates(array, names[k]);
       if (n >= 0 && array.shape(0) != n)
         throw py::value_error("point arrays must have the same length");
       n = array.shape(0);

@@ -58,6 +58,11 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
   const FlatPolygons flat = geometry_polygons(geometry);
   const std::size_t parts = flat.polygon_offsets.size() - 1;
   Scratch& s = thread_scratch();
+  if (parts == 0) {  // an empty geometry: what empty coordinates give (empty_input)
+    s.points.clear();
+    s.ring_offsets.assign(1, 0);
+    return finish(run(s, options), strict);
+  }
   Triangulation<> all;
   std::string where;
   for (std::size_t p = 0; p < parts; ++p) {
@@ -103,54 +108,28 @@ py::object triangulate(py::handle coords, py::handle ring_ends, const Options& o
 
 /// triangulate's arguments, as pear.triangulate's signature names them.
 struct TriangulateArguments {
-  py::handle coords, ring_ends = Py_None;
+  py::handle coords, ring_ends;  // null until given
   OptionArguments options;
   bool strict = true;
 };
 
-std::string_view string_argument(py::handle value, const char* name) {
-  Py_ssize_t size = 0;
-  const char* text =
-      PyUnicode_Check(value.ptr()) ? PyUnicode_AsUTF8AndSize(value.ptr(), &size) : nullptr;
-  if (!text) throw py::type_error(std::string(name) + " must be a str");
-  return {text, static_cast<std::size_t>(size)};
-}
-
-long int_argument(py::handle value) {
-  const long number = PyLong_AsLong(value.ptr());
-  if (number == -1 && PyErr_Occurred()) throw py::error_already_set();
-  return number;
-}
-
-bool bool_argument(py::handle value) {
-  const int truth = PyObject_IsTrue(value.ptr());
-  if (truth < 0) throw py::error_already_set();
-  return truth != 0;
-}
-
 void keyword_argument(TriangulateArguments& a, std::string_view name, py::handle value) {
-  if (name == "algorithm") {
-    a.options.algorithm = string_argument(value, "algorithm");
-  } else if (name == "heuristic") {
-    a.options.heuristic = string_argument(value, "heuristic");
-  } else if (name == "delaunay") {
-    a.options.delaunay = bool_argument(value);
-  } else if (name == "check_simplicity") {
-    a.options.check_simplicity = bool_argument(value);
-  } else if (name == "threads") {
-    a.options.threads = int_argument(value);
-  } else if (name == "partitions") {
-    a.options.partitions = int_argument(value);
-  } else if (name == "strict") {
-    a.strict = bool_argument(value);
-  } else if (name == "ring_ends") {
-    a.ring_ends = value;
-  } else if (name == "coords") {
-    a.coords = value;
-  } else {
+  // A keyword that names a positional argument given already: TypeError, as Python says it.
+  const auto once = [&](py::handle& slot) {
+    if (slot)
+      throw py::type_error("triangulate() got multiple values for argument '" + std::string(name) +
+                           "'");
+    slot = value;
+  };
+  if (name == "strict")
+    a.strict = bool_argument(value, "strict");
+  else if (name == "ring_ends")
+    once(a.ring_ends);
+  else if (name == "coords")
+    once(a.coords);
+  else if (!option_argument(a.options, name, value))
     throw py::type_error("triangulate() got an unexpected keyword argument '" + std::string(name) +
                          "'");
-  }
 }
 
 /// pear.triangulate as a vectorcall function: for polygons of a few dozen points the generic
@@ -167,7 +146,8 @@ PyObject* triangulate_vectorcall(PyObject*, PyObject* const* args, Py_ssize_t po
       keyword_argument(a, string_argument(PyTuple_GET_ITEM(keyword_names, k), "a keyword"),
                        args[positional + k]);
     if (!a.coords) throw py::type_error("triangulate() missing its argument 'coords'");
-    return triangulate(a.coords, a.ring_ends, make_options(a.options), a.strict).release().ptr();
+    const py::handle ring_ends = a.ring_ends ? a.ring_ends : py::handle(Py_None);
+    return triangulate(a.coords, ring_ends, make_options(a.options), a.strict).release().ptr();
   } catch (py::error_already_set& e) {
     e.restore();
   } catch (const py::builtin_exception& e) {
@@ -187,10 +167,11 @@ PyMethodDef triangulate_definition = {
     "triangulate(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
     "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
     "Triangulates one polygon; returns an (M, 3) uint32 array of indices into coords.\n\n"
-    "coords: an (N, 2) array-like of float64 (a C-contiguous float64 array is not converted),\n"
-    "or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings closed, in\n"
-    "shapely's order). ring_ends: None (one ring), ring offsets [0, ..., N], earcut's ring ends\n"
-    "[..., N] or earcut's hole indices. Raises pear.InvalidInputError (a ValueError) naming ring\n"
+    "coords: an (N, 2) array-like of real numbers (a C-contiguous float64 array is not\n"
+    "converted), or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings\n"
+    "closed, in shapely's order). ring_ends: None (one ring), integer ring offsets [0, ..., N],\n"
+    "earcut's ring ends [..., N] or earcut's hole indices. Raises pear.InvalidInputError (a "
+    "ValueError) naming ring\n"
     "and vertex for input that cannot be triangulated, pear.NotSimpleError carrying the\n"
     "best-effort triangles for a polygon that is not simple; strict=False returns (triangles,\n"
     "pear.Status) instead of raising NotSimpleError. See docs/python.md."};
@@ -198,10 +179,13 @@ PyMethodDef triangulate_definition = {
 /// Many polygons in the layout of shapely 2's to_ragged_array; returns the batch's arrays
 /// (pear._many.BatchResult wraps them).
 py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::handle polygon_offsets,
-                            std::string_view algorithm, std::string_view heuristic, bool delaunay,
-                            long threads, long partitions, bool check_simplicity) {
-  const Options options =
-      make_options({algorithm, heuristic, delaunay, check_simplicity, threads, partitions});
+                            const py::kwargs& keywords) {
+  OptionArguments arguments;
+  for (const auto& [name, value] : keywords)
+    if (!option_argument(arguments, string_argument(name, "a keyword"), value))
+      throw py::type_error("triangulate_batch() got an unexpected keyword argument '" +
+                           std::string(py::str(name)) + "'");
+  const Options options = make_options(arguments);
   const Coordinates points = as_coordinates(coords);
   // The offsets decide which addresses are read: they are copied while the GIL is held, so
   // that another thread writing the caller's arrays cannot change one between its check and
@@ -301,10 +285,13 @@ PYBIND11_MODULE(_pear, m) {
   m.add_object("triangulate", py::reinterpret_steal<py::object>(PyCFunction_NewEx(
                                   &triangulate_definition, nullptr, py::str("pear._pear").ptr())));
   m.def("triangulate_batch", &triangulate_batch, py::arg("coords"), py::arg("ring_offsets"),
-        py::arg("polygon_offsets"), py::kw_only(), py::arg("algorithm") = "automatic",
-        py::arg("heuristic") = "top", py::arg("delaunay") = false, py::arg("threads") = 0,
-        py::arg("partitions") = 0, py::arg("check_simplicity") = true,
-        "Ragged arrays in, the batch's arrays out; use pear.triangulate_many.");
+        py::arg("polygon_offsets"),
+        "Ragged arrays in, the batch's arrays out (options by keyword); use "
+        "pear.triangulate_many.");
+  m.def(
+      "as_offsets", [](py::handle values, const char* name) { return as_offsets(values, name); },
+      py::arg("values"), py::arg("name"),
+      "values as a 1-D int64 array by pear's rules (docs/python.md); errors name `name`.");
   m.def(
       "read_wkb", [](py::handle values) { return flat_arrays(read_wkb_sequence(values)); },
       py::arg("values"),

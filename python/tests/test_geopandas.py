@@ -78,6 +78,18 @@ def test_empty_and_wrong_inputs():
         pear_geopandas.triangulate([SQUARE])
 
 
+@pytest.mark.parametrize("function", ["triangulate", "triangle_polygons"])
+def test_options_follow_triangulate_many(function):
+    # Issue 30, item 7: the same rules as pear.triangulate_many, not a silent conversion.
+    call = getattr(pear_geopandas, function)
+    with pytest.raises(ValueError, match=f"threads {2**70} is not between 0"):
+        call(frame(), threads=2**70)
+    with pytest.raises(TypeError, match="threads must be an int, not float"):
+        call(frame(), threads=1.5)
+    with pytest.raises(TypeError, match="delaunay must be a bool, not str"):
+        call(frame(), delaunay="no")
+
+
 def counties():
     files = corpus.read_folder(corpus.shared_root(), "counties")
     corpus.require(*(f.path for f in files))

@@ -251,7 +251,10 @@ def test_shapely_multipolygon_and_errors():
         pear.triangulate(geometry.MultiPolygon([square, bowtie]))
     with pytest.raises(ValueError, match="not a Polygon"):
         pear.triangulate(geometry.LineString([(0, 0), (1, 1)]))
-    assert pear.triangulate(geometry.Polygon()).shape == (0, 3)
+    for empty in (geometry.Polygon(), geometry.MultiPolygon()):  # as empty coordinates
+        with pytest.raises(pear.InvalidInputError) as raised:
+            pear.triangulate(empty, strict=False)
+        assert raised.value.issue == "empty_input"
 
 
 def test_the_readme_example_runs():
