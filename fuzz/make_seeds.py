@@ -224,12 +224,127 @@ def reader_seeds():
         write("readers", name, bytes([header]) + text.encode(), "hand-made")
 
 
+def offset(value):
+    """fuzz/batch.cpp's offset entry for value: a small one in a byte, else 8 raw bytes."""
+    return [value << 3] if 0 <= value <= 31 else [6] + list(struct.pack("<q", value))
+
+
+def extreme(k):
+    """fuzz/batch.cpp's ends: INT64_MIN, INT64_MAX, -1, limit + 1, ... (mode 5)."""
+    return [(k << 3) | 5]
+
+
+def batch_bytes(rings_of_points, ring_offsets, polygon_offsets, header=0):
+    """fuzz/batch.cpp: header, points (x | y << 4), ring offsets, polygon offsets."""
+    points = [x | y << 4 for ring in rings_of_points for x, y in ring]
+    out = [header, len(points)] + points + [len(ring_offsets)]
+    out += [b for o in ring_offsets for b in (o if isinstance(o, list) else offset(o))]
+    out += [len(polygon_offsets)]
+    return out + [b for o in polygon_offsets for b in (o if isinstance(o, list) else offset(o))]
+
+
+INT64_MIN, INT64_MAX = -2**63, 2**63 - 1
+
+
+def batch_seeds():
+    square = [(0, 0), (3, 0), (3, 3), (0, 3)]
+    triangle = [(5, 5), (8, 5), (6, 8)]
+    big, hole = [(0, 0), (8, 0), (8, 8), (0, 8)], [(2, 2), (2, 4), (4, 4), (4, 2)]
+    bowtie = [(0, 0), (4, 4), (4, 0), (0, 4)]
+    issue = "issue 30, item 2"
+    seeds = {
+        "squares": ([square] * 3, [0, 4, 8, 12], [0, 1, 2, 3], 0, "hand-made"),
+        "squares-two-threads-delaunay": ([square] * 3, [0, 4, 8, 12], [0, 1, 2, 3], 3, "hand-made"),
+        "square-with-hole": ([big, hole], [0, 4, 8], [0, 2], 0, "hand-made"),
+        "mixed-no-simplicity-check": ([big, hole, bowtie, triangle], [0, 4, 8, 12, 15],
+                                      [0, 2, 3, 4], 4, "hand-made"),
+        "ring-offset-int64-min": ([square, triangle], [INT64_MIN, 4, 7], [0, 1, 2], 0, issue),
+        "ring-offset-int64-max": ([square, triangle], [0, 4, INT64_MAX], [0, 1, 2], 1, issue),
+        "ring-offsets-ends": ([square, triangle], [extreme(1), extreme(0), extreme(1)], [0, 1, 2],
+                              0, "hand-made"),
+        "polygon-offsets-ends": ([square, triangle], [0, 4, 7], [INT64_MIN, 1, INT64_MAX], 0,
+                                 "hand-made"),
+        "ring-past-the-points": ([square, triangle], [0, 4, extreme(3)], [0, 1, 2], 0, "hand-made"),
+        "slice-from-polygon-1": ([square] * 3, [0, 4, 8, 12], [1, 2, 3], 0, "hand-made"),
+        "polygons-backwards": ([square] * 3, [0, 4, 8, 12], [0, 2, 1, 3], 0, "hand-made"),
+        "empty-polygon": ([square] * 2, [0, 4, 8], [0, 0, 1, 2], 0, "hand-made"),
+        "no-ring-offsets": ([square], [], [0, 0], 0, "hand-made"),
+        "rings-out-of-order": ([square, triangle], [0, 5, 4, 7], [0, 3], 0, "hand-made"),
+    }
+    for name, (rings, ring_offsets, polygon_offsets, header, source) in seeds.items():
+        write("batch", name, batch_bytes(rings, ring_offsets, polygon_offsets, header), source)
+
+
+def polygon_wkb(rings, order="<", z=False, srid=None, code=3):
+    """One WKB Polygon (code 3) of rings, closed as given; ISO Z, or EWKB with an SRID."""
+    out = struct.pack("<B" if order == "<" else ">B", 1 if order == "<" else 0)
+    if srid is not None:
+        out += struct.pack(order + "II", code | 0x20000000 | (0x80000000 if z else 0), srid)
+    else:
+        out += struct.pack(order + "I", code + (1000 if z else 0))
+    out += struct.pack(order + "I", len(rings))
+    for ring in rings:
+        out += struct.pack(order + "I", len(ring))
+        for x, y in ring:
+            out += struct.pack(order + ("ddd" if z else "dd"), x, y, *([7.0] if z else []))
+    return out
+
+
+def multipolygon_wkb(parts, order="<"):
+    head = struct.pack("<B" if order == "<" else ">B", 1 if order == "<" else 0)
+    head += struct.pack(order + "II", 6, len(parts))
+    return head + b"".join(polygon_wkb(p, order) for p in parts)
+
+
+def wkb_bytes(values, header=0):
+    """fuzz/wkb.cpp: header (values = 1 + header % 4), 16-bit lengths but the last, values."""
+    assert len(values) == 1 + header % 4
+    out = bytes([header]) + b"".join(struct.pack("<H", len(v)) for v in values[:-1])
+    return out + b"".join(values)
+
+
+def wkb_seeds():
+    square = [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0), (0.0, 0.0)]
+    hole = [(1.0, 1.0), (1.0, 2.0), (2.0, 2.0), (1.0, 1.0)]
+    far = [(10.0, 0.0), (11.0, 0.0), (10.5, 1e-300), (10.0, 0.0)]
+    poly = polygon_wkb([square, hole])
+    multi = multipolygon_wkb([[square, hole], [far]])
+    empty_collection = struct.pack("<BII", 1, 7, 0)
+    seeds = {
+        "polygon": ([poly], 0),
+        "polygon-big-endian": ([polygon_wkb([square, hole], ">")], 4),
+        "polygon-z": ([polygon_wkb([square], z=True)], 8),
+        "polygon-ewkb-srid-z": ([polygon_wkb([square, hole], ">", z=True, srid=4326)], 16 | 8),
+        "multipolygon": ([multi], 4 | 16),
+        "multipolygon-big-endian": ([multipolygon_wkb([[square], [far, hole]], ">")], 8),
+        "empty-collection": ([empty_collection], 0),
+        "three-values-one-missing": ([poly, b"", multi], 2),
+        "four-values": ([poly, empty_collection, multi, polygon_wkb([far], ">")], 3 | 4),
+        "truncated-in-a-point": ([poly[:-5]], 0),
+        "truncated-after-good-value": ([poly, multi[:30]], 1),
+        "ring-count-huge": ([poly[:5] + struct.pack("<I", 0xFFFFFFFF) + poly[9:]], 0),
+        "point-count-huge": ([poly[:9] + struct.pack("<I", 0xFFFFFFF0) + poly[13:]], 0),
+        "part-count-huge": ([multi[:5] + struct.pack("<I", 0x7FFFFFFF) + multi[9:]], 0),
+        "byte-order-2": ([b"\x02" + poly[1:]], 0),
+        "byte-order-wrong-way": ([b"\x00" + poly[1:]], 0),
+        "trailing-bytes": ([poly + b"\x00\x01"], 0),
+        "linestring": ([struct.pack("<BII", 1, 2, 2) + struct.pack("<4d", 0, 0, 1, 1)], 0),
+        "collection-not-empty": ([struct.pack("<BII", 1, 7, 1) + poly], 0),
+        "multipolygon-part-not-polygon": ([struct.pack("<BII", 1, 6, 1) + empty_collection], 0),
+        "polygon-no-rings-and-empty-ring": ([polygon_wkb([]), polygon_wkb([[]])], 1),
+    }
+    for name, (values, header) in seeds.items():
+        write("wkb", name, wkb_bytes(values, header), "hand-made")
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: fuzz/make_seeds.py PEAR_CLI")
     degenerate_seeds()
     configured_seeds(sys.argv[1])
     reader_seeds()
+    batch_seeds()
+    wkb_seeds()
     found = OUT / "MANIFEST.tsv"  # keep the lines of inputs found by fuzzing
     kept = [line.split("\t", 1) for line in found.read_text().splitlines()[1:]] if found.exists() else []
     manifest.extend((f, s) for f, s in kept if "/crash-" in f or "/regression-" in f)

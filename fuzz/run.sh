@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Fuzzes one target with libFuzzer for a while: fuzz/run.sh TARGET SECONDS [libFuzzer options]
-# TARGET: degenerate bridged parallel cdt readers. Sets up build-fuzz (clang, libFuzzer, ASan,
-# UBSan; FUZZ_BUILD names another) when it is missing and builds only the target. The seeds in
-# corpus/fuzz/TARGET are read, never written; an input slower than FUZZ_TIMEOUT seconds (30) is
-# reported as a hang; inputs libFuzzer finds go to
+# TARGET: degenerate bridged parallel cdt readers batch wkb. Sets up build-fuzz (clang,
+# libFuzzer, ASan, UBSan; FUZZ_BUILD names another) when it is missing and builds only the
+# target. The seeds in corpus/fuzz/TARGET are read, never written; an input slower than
+# FUZZ_TIMEOUT seconds (30) is reported as a hang; inputs libFuzzer finds go to
 # BUILD/fuzz-corpus/TARGET, a crash to BUILD/fuzz-artifacts/TARGET/ (then the exit status is 1).
 # Add a crash to corpus/fuzz/TARGET/crash-WHAT to keep it as a regression input.
 # Leave src/ alone while it builds: objects compiled from two versions of a header link into a
