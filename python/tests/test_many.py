@@ -201,3 +201,57 @@ def test_triangles_as_wkb_read_back():
         assert list(shape.exterior.coords) == [tuple(SQUARE_WITH_HOLE[i]) for i in (a, b, c, a)]
     with pytest.raises(ValueError, match="index 8"):
         pear._pear.triangles_wkb(SQUARE_WITH_HOLE, [[0, 1, 8]])
+
+
+def test_random_and_extreme_offsets_are_statuses():
+    """Property (issue 30): whatever int64 offsets the caller hands over, one status per
+    polygon, monotone triangle offsets, and a polygon is ok exactly when its offsets are good
+    (then its triangles index its own points), else invalid_input naming the offsets."""
+    rng = np.random.default_rng(30)
+    coords = np.tile([[0, 0], [1, 0], [1, 1], [0, 1.0]], (4, 1))  # 4 squares
+    ends = np.array([-2**63, 2**63 - 1, -1, 17, 2**62], dtype=np.int64)
+    for _ in range(300):
+        rings = np.arange(0, 17, 4, dtype=np.int64)
+        polygons = np.arange(5, dtype=np.int64)
+        for offsets in (rings, polygons):
+            picks = rng.random(len(offsets)) < 0.25
+            offsets[picks] = rng.choice(ends, picks.sum())
+        result = pear.triangulate_many(coords, rings, polygons, threads=int(rng.integers(1, 3)))
+        assert len(result) == 4 and result.triangle_offsets[0] == 0
+        assert np.all(np.diff(result.triangle_offsets) >= 0)
+        assert result.triangle_offsets[-1] == len(result.triangles)
+        for p in range(4):
+            r0, r1 = polygons[p], polygons[p + 1]
+            good = 0 <= r0 < r1 <= 4 and all(0 <= rings[r] <= 16 for r in range(r0, r1 + 1)) \
+                and np.all(np.diff(rings[r0:r1 + 1]) >= 0)
+            if not good:
+                assert result.status[p] == pear.Status.invalid_input
+                assert result.diagnostics(p)[0].issue in ("invalid_offsets", "empty_input")
+                assert len(result.polygon_triangles(p)) == 0
+            elif result.status[p] == pear.Status.ok:
+                mine = result.polygon_triangles(p)
+                assert np.all((mine >= rings[r0]) & (mine < rings[r1]))
+
+
+def test_mangled_wkb_is_an_error_naming_a_byte_inside_or_a_result():
+    """Property (issue 30): WKB with bytes overwritten, cut or extended, in bytes or bytearray,
+    raises WKBError naming the value and a byte within it, or reads coordinates of 16 bytes
+    each at least; never anything else."""
+    rng = np.random.default_rng(31)
+    values = [SQUARE.wkb, wkb.dumps(SQUARE, big_endian=True), wkb.dumps(
+        geometry.MultiPolygon([SQUARE, TRIANGLE]))]
+    for _ in range(2000):
+        data = bytearray(values[int(rng.integers(len(values)))])
+        for _ in range(int(rng.integers(1, 4))):
+            at = int(rng.integers(len(data)))
+            data[at] = rng.choice([0, 1, 0xFF, int(rng.integers(256))])
+        if rng.random() < 0.3:
+            data = data[:int(rng.integers(len(data) + 1))]
+        value = bytes(data) if rng.random() < 0.5 else data
+        try:
+            result = pear.triangulate_many([None, value], threads=1)
+        except pear.WKBError as error:
+            assert error.index == 1 and 0 <= error.offset <= len(value)
+            continue
+        assert 16 * len(result.coordinates) <= len(value)
+        assert len(result.geometry_offsets) == 3
