@@ -170,11 +170,12 @@ PyMethodDef triangulate_definition = {
     "coords: an (N, 2) array-like of real numbers (a C-contiguous float64 array is not\n"
     "converted), or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings\n"
     "closed, in shapely's order). ring_ends: None (one ring), integer ring offsets [0, ..., N],\n"
-    "earcut's ring ends [..., N] or earcut's hole indices. Raises pear.InvalidInputError (a "
-    "ValueError) naming ring\n"
-    "and vertex for input that cannot be triangulated, pear.NotSimpleError carrying the\n"
-    "best-effort triangles for a polygon that is not simple; strict=False returns (triangles,\n"
-    "pear.Status) instead of raising NotSimpleError. See docs/python.md."};
+    "earcut's ring ends [..., N] or earcut's hole indices. Raises pear.InvalidInputError (a\n"
+    "ValueError) naming ring and vertex for input that cannot be triangulated,\n"
+    "pear.NotSimpleError carrying the best-effort triangles for a polygon that is not simple;\n"
+    "strict=False returns (triangles, pear.Status) instead of raising NotSimpleError. Wrong\n"
+    "types raise TypeError, wrong shapes and values out of range ValueError. See\n"
+    "docs/python.md."};
 
 /// Many polygons in the layout of shapely 2's to_ragged_array; returns the batch's arrays
 /// (pear._many.BatchResult wraps them).
