@@ -153,7 +153,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const std::vector<std::int64_t> polygons = read_offsets(bytes, bytes.byte() % 9, ring_count);
 
   pear::Options options;
-  options.executor = &fuzz::shared_executor(header & 1 ? 2 : 1);
+  options.executor = fuzz::shared_executor(header & 1 ? 2 : 1);
   options.delaunay = header & 2;
   options.check_simplicity = !(header & 4);
   const pear::BatchTriangulation<> result =
