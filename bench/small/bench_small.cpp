@@ -1,9 +1,8 @@
 // bench_small: many small polygons (issue 16). Per folder of the shared corpus (counties,
 // glyphs, countries): pear one call per polygon (a reused Triangulator with the default options;
 // with `fast` and no check; the free function pear::triangulate), pear::triangulate_batch at 1
-// and 2 threads, and CGAL's CDT in the same binary as a stable yardstick. And the crossover of
-// the small path: one ring of n vertices through the small path and through the general engine
-// (partition-and-cut with one partition: the general sequential engine), n from 16 to 4096.
+// and 2 threads, and CGAL's CDT in the same binary as a stable yardstick. The ear clipper's
+// crossover of its two strategies is bench_strategies (bench_strategies.cpp).
 //
 //   bench_small [--benchmark_filter=...]      PEAR_BENCH_CORPUS: the corpus (default ../shared)
 //
@@ -115,24 +114,6 @@ void cgal(benchmark::State& state, const Folder* folder) {
 }
 #endif
 
-/// One ring of the family at n vertices, many times over: the small path against the general
-/// engine, whole calls (cleaning, the exact check, clipping) on a reused Triangulator.
-void crossover(benchmark::State& state, std::string kind, std::size_t n, bool general) {
-  const pear::Polygon polygon = pear::generate_polygon(kind, n, 7);
-  pear::Options options;
-  options.threads = 1;
-  if (general) {
-    options.algorithm = pear::Algorithm::partition_and_cut;
-    options.partitions = 1;
-  }
-  pear::Triangulator triangulator;
-  for (auto _ : state)
-    benchmark::DoNotOptimize(triangulator.triangulate(polygon, options).triangles.data());
-  state.counters["ns_per_vertex"] =
-      benchmark::Counter(static_cast<double>(state.iterations() * polygon[0].size()),
-                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
-}
-
 void register_benchmarks(std::vector<std::unique_ptr<Folder>>& folders) {
   for (const char* name : {"counties", "glyphs", "countries"}) {
     auto folder = std::make_unique<Folder>(load_folder(name));
@@ -160,19 +141,6 @@ void register_benchmarks(std::vector<std::unique_ptr<Folder>>& folders) {
 #endif
     folders.push_back(std::move(folder));
   }
-  for (const char* kind : {"random", "star", "koch"})
-    for (std::size_t n : {16u, 32u, 64u, 128u, 256u, 512u, 1024u, 2048u, 4096u})
-      for (bool general : {false, true}) {
-        try {
-          pear::generate_polygon(kind, n, 7);
-        } catch (const std::invalid_argument&) {
-          continue;
-        }
-        benchmark::RegisterBenchmark(("crossover/" + std::string(kind) + "/" + std::to_string(n) +
-                                      (general ? "/general" : "/small"))
-                                         .c_str(),
-                                     crossover, std::string(kind), n, general);
-      }
 }
 
 }  // namespace

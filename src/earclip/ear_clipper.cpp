@@ -7,7 +7,7 @@
 #include <cmath>
 
 namespace pear::detail {
-void EarClipper::classify(std::uint32_t entry, const std::vector<std::uint8_t>* shared) {
+void EarClipper::classify(std::uint32_t entry, SharedPositions shared) {
   Boundary& b = *b_;
   reflex_.assign(b.size(), 0);
   grid_built_ = false;
@@ -43,12 +43,32 @@ void EarClipper::classify(std::uint32_t entry, const std::vector<std::uint8_t>* 
 
 /// A node that shares its position with one of another cycle, or one that a spike took away,
 /// is marked too: an extra hashed node can only make an ear test stricter.
-void EarClipper::mark_pinches(const std::vector<std::uint8_t>* shared) {
-  if (shared != nullptr && shared->size() == b_->size()) {
-    pinch_ = *shared;
+void EarClipper::mark_pinches(SharedPositions shared) {
+  if (shared.marks != nullptr && shared.marks->size() == b_->size()) {
+    pinch_ = *shared.marks;
+    return;
+  }
+  if (shared.none) {
+    pinch_.assign(b_->size(), 0);
     return;
   }
   find_pinches(*b_, alive_, remaining_, pinch_, position_table_);
+}
+
+const std::vector<std::uint8_t>* EarClipper::shared_marks(std::uint32_t entry,
+                                                          SharedPositions shared) {
+  if (shared.marks != nullptr && shared.marks->size() == b_->size()) return shared.marks;
+  if (shared.none) return nullptr;
+  alive_.assign(b_->size(), 0);
+  std::size_t live = 0;
+  std::uint32_t v = entry;
+  do {
+    alive_[v] = 1;
+    ++live;
+    v = b_->next[v];
+  } while (v != entry && live <= b_->size());
+  find_pinches(*b_, alive_, live, pinch_, position_table_);
+  return &pinch_;
 }
 
 void EarClipper::remove(std::uint32_t v) {
@@ -131,8 +151,9 @@ void EarClipper::update_neighbour(std::uint32_t v) {
 /// on) before their turn, and an ear's status changes only when its neighbours do, so testing
 /// at the pop clips the same ears in the same order with about half the tests.
 void EarClipper::offer(std::uint32_t v) {
-  if (!(b_->turn(v) > 0)) return;
-  queue_.push(ear_bucket(*b_, v, heuristic_), {v, stamp_[v]}, v / EarQueue::block_nodes);
+  const double turn = b_->turn(v);
+  if (!(turn > 0)) return;
+  queue_.push(ear_bucket(*b_, v, heuristic_, turn), {v, stamp_[v]}, v / EarQueue::block_nodes);
 }
 
 /// The best queued node that is still current and an ear.
@@ -188,7 +209,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
 }
 
 void EarClipper::prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                         TriangleList& out, const std::vector<std::uint8_t>* shared) {
+                         TriangleList& out, SharedPositions shared) {
   b_ = &b;
   out_ = &out;
   heuristic_ = heuristic;
@@ -212,9 +233,17 @@ bool EarClipper::clip_prepared(std::uint32_t entry) {
   return !best_effort_;
 }
 
-bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) {
-  prepare(b, entry, heuristic, out);
-  return clip_prepared(entry);
+bool EarClipper::run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+                     SharedPositions shared) {
+  if (b.size() <= BitsetClipper::max_nodes) {
+    b_ = &b;
+    const std::vector<std::uint8_t>* marks = shared_marks(entry, shared);
+    if (bits_.clip(b, entry, heuristic, out, marks)) return true;
+    // No ear the bit sets could find: the queue's fallbacks take what is left.
+    entry = bits_.anchor();
+    shared = {marks, marks == nullptr};
+  }
+  return run_queue(b, entry, heuristic, out, shared);
 }
 
 void EarClipper::enqueue_cycle(std::uint32_t entry) {
@@ -296,7 +325,7 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
 
 EarStatistics EarClipper::statistics(Boundary& b, std::uint32_t entry) {
   b_ = &b;
-  classify(entry);
+  classify(entry, {});
   EarStatistics stats;
   if (remaining_ < 3) return stats;
   // Dissolving spikes may have removed `entry` itself (a hole that repeats the outer ring).

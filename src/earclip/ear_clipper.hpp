@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "bitset_clipper.hpp"
 #include "core/boundary.hpp"
 #include "core/cycle_clipper.hpp"
 #include "core/ear_queue.hpp"
@@ -16,6 +17,13 @@
 
 namespace pear::detail {
 
+/// Which nodes share their position with another node (bridge ends, rings touching at a
+/// vertex): the clippers test those in every ear test, whatever their angle.
+struct SharedPositions {
+  const std::vector<std::uint8_t>* marks = nullptr;  ///< per node, when known (TouchingPoints)
+  bool none = false;  ///< the caller knows that no two nodes share a position
+};
+
 class EarClipper final : public CycleClipper {
  public:
   bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) override {
@@ -23,15 +31,19 @@ class EarClipper final : public CycleClipper {
   }
   /// Clips the cycle through `entry` down to nothing, appending triangles (the caller's vertex
   /// indices, counterclockwise) to `out`. Returns false when a best-effort fallback had to be
-  /// used: the boundary was not weakly simple, and the result may overlap.
-  bool run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out);
-  /// run() in its two steps, for profiles: dissolving spikes, marking pinches and hashing the
-  /// reflex nodes; then clipping.
-  /// `shared`, when given, marks every node whose position another node has (as
-  /// TouchingPoints::shared_positions does): the pinches need not be found again.
-  void prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
-               const std::vector<std::uint8_t>* shared = nullptr);
-  bool clip_prepared(std::uint32_t entry);
+  /// used: the boundary was not weakly simple, and the result may overlap. The strategy
+  /// follows the size: bit sets up to BitsetClipper::max_nodes nodes (where they find no ear,
+  /// the queue and its fallbacks take what is left), a reflex grid and a queue (or `fast`'s
+  /// walk) beyond.
+  bool run(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+           SharedPositions shared = {});
+  /// run() with the queue whatever the size: for tests and for bench_small's crossover of the
+  /// two strategies.
+  bool run_queue(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+                 SharedPositions shared = {}) {
+    prepare(b, entry, heuristic, out, shared);
+    return clip_prepared(entry);
+  }
 
   /// Convex, reflex and ear counts of the cycle through `entry` (nothing is clipped).
   EarStatistics statistics(Boundary& b, std::uint32_t entry);
@@ -51,13 +63,20 @@ class EarClipper final : public CycleClipper {
   std::uint32_t best_effort_vertex() const override { return best_effort_vertex_; }
 
  private:
-  void classify(std::uint32_t entry, const std::vector<std::uint8_t>* shared = nullptr);
+  /// The queue's two steps: dissolving spikes, marking pinches and hashing the reflex nodes;
+  /// then clipping.
+  void prepare(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+               SharedPositions shared);
+  bool clip_prepared(std::uint32_t entry);
+  void classify(std::uint32_t entry, SharedPositions shared);
   bool is_ear(std::uint32_t v) const;
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
   void remove(std::uint32_t v);
-  void mark_pinches(const std::vector<std::uint8_t>* shared);
+  void mark_pinches(SharedPositions shared);
+  /// Every node's shared position, for the bit sets: given, none, or found here.
+  const std::vector<std::uint8_t>* shared_marks(std::uint32_t entry, SharedPositions shared);
   void drop_reflex(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
   std::uint32_t settle(std::uint32_t v, bool queue);
@@ -112,6 +131,7 @@ class EarClipper final : public CycleClipper {
   EarQueue queue_;
   ReflexGrid grid_;
   bool grid_built_ = false;  ///< spikes are dissolved before the grid exists
+  BitsetClipper bits_;
 };
 
 /// A new EarClipper, for the parallel variants (MakeClipper).

@@ -64,15 +64,6 @@ __attribute__((target("avx2"))) bool avx2_meets(const BoxColumns& c, std::uint32
   return _mm256_movemask_pd(any) != 0;
 }
 
-__attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<const RowRanges> rows,
-                                               std::span<std::uint64_t> meets) {
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    const RowRanges& r = rows[k];
-    const Box b = c.box(r.row);
-    const bool first = avx2_meets(c, r.from, r.to, b), second = avx2_meets(c, r.from2, r.to2, b);
-    meets[k / 64] |= static_cast<std::uint64_t>(first | second) << (k % 64);
-  }
-}
 #endif
 
 /// The bits of [0, count), count <= 64.
@@ -80,10 +71,10 @@ std::uint64_t first_bits(std::uint32_t count) {
   return count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
 }
 
-std::uint64_t scalar_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
+std::uint64_t scalar_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& b) {
   std::uint64_t in = 0;
   for (std::uint32_t i = 0; i < count; ++i) {
-    const double x = p.x[i], y = p.y[i];
+    const double x = xs[i], y = ys[i];
     in |= static_cast<std::uint64_t>((x >= b.x0) & (x <= b.x1) & (y >= b.y0) & (y <= b.y1)) << i;
   }
   return in;
@@ -97,12 +88,12 @@ bool use_avx2(BoxScan scan) {
 }
 
 /// Two points a step, four with AVX2; the lanes past `count` read padding and are masked off.
-std::uint64_t sse2_in_box(const PointColumns& p, std::uint32_t count, const Box& b) {
+std::uint64_t sse2_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& b) {
   const __m128d x0 = _mm_set1_pd(b.x0), x1 = _mm_set1_pd(b.x1);
   const __m128d y0 = _mm_set1_pd(b.y0), y1 = _mm_set1_pd(b.y1);
   std::uint64_t in = 0;
   for (std::uint32_t i = 0; i < count; i += 2) {
-    const __m128d x = _mm_loadu_pd(&p.x[i]), y = _mm_loadu_pd(&p.y[i]);
+    const __m128d x = _mm_loadu_pd(xs + i), y = _mm_loadu_pd(ys + i);
     const __m128d in_x = _mm_and_pd(_mm_cmple_pd(x0, x), _mm_cmple_pd(x, x1));
     const __m128d in_y = _mm_and_pd(_mm_cmple_pd(y0, y), _mm_cmple_pd(y, y1));
     in |= static_cast<std::uint64_t>(_mm_movemask_pd(_mm_and_pd(in_x, in_y))) << i;
@@ -110,13 +101,13 @@ std::uint64_t sse2_in_box(const PointColumns& p, std::uint32_t count, const Box&
   return in & first_bits(count);
 }
 
-__attribute__((target("avx2"))) std::uint64_t avx2_in_box(const PointColumns& p,
+__attribute__((target("avx2"))) std::uint64_t avx2_in_box(const double* xs, const double* ys,
                                                           std::uint32_t count, const Box& b) {
   const __m256d x0 = _mm256_set1_pd(b.x0), x1 = _mm256_set1_pd(b.x1);
   const __m256d y0 = _mm256_set1_pd(b.y0), y1 = _mm256_set1_pd(b.y1);
   std::uint64_t in = 0;
   for (std::uint32_t i = 0; i < count; i += 4) {
-    const __m256d x = _mm256_loadu_pd(&p.x[i]), y = _mm256_loadu_pd(&p.y[i]);
+    const __m256d x = _mm256_loadu_pd(xs + i), y = _mm256_loadu_pd(ys + i);
     const __m256d in_x =
         _mm256_and_pd(_mm256_cmp_pd(x0, x, _CMP_LE_OQ), _mm256_cmp_pd(x, x1, _CMP_LE_OQ));
     const __m256d in_y =
@@ -127,9 +118,11 @@ __attribute__((target("avx2"))) std::uint64_t avx2_in_box(const PointColumns& p,
 }
 #endif
 
+/// Sets the bit of every row whose box meets a box of its ranges, by `scan`. Always inlined, so
+/// that in avx2_rows the AVX2 scan is inlined too.
 template <class Meets>
-void rows_with(const BoxColumns& c, std::span<const RowRanges> rows, std::span<std::uint64_t> meets,
-               Meets&& scan) {
+[[gnu::always_inline]] inline void rows_with(const BoxColumns& c, std::span<const RowRanges> rows,
+                                             std::span<std::uint64_t> meets, Meets&& scan) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const RowRanges& r = rows[k];
     const Box b = c.box(r.row);
@@ -137,6 +130,13 @@ void rows_with(const BoxColumns& c, std::span<const RowRanges> rows, std::span<s
     meets[k / 64] |= static_cast<std::uint64_t>(first | second) << (k % 64);
   }
 }
+
+#if PEAR_BOX_SCAN_X86
+__attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<const RowRanges> rows,
+                                               std::span<std::uint64_t> meets) {
+  rows_with(c, rows, meets, avx2_meets);
+}
+#endif
 
 }  // namespace
 
@@ -150,13 +150,17 @@ void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
   rows_with(columns, rows, meets, scalar_meets);
 }
 
-std::uint64_t points_in_box(const PointColumns& points, std::uint32_t count, const Box& box,
-                            BoxScan scan) {
+PointsInBox points_in_box_function(BoxScan scan) {
 #if PEAR_BOX_SCAN_X86
-  if (use_avx2(scan)) return avx2_in_box(points, count, box);
-  if (scan != BoxScan::scalar) return sse2_in_box(points, count, box);
+  if (use_avx2(scan)) return avx2_in_box;
+  if (scan != BoxScan::scalar) return sse2_in_box;
 #endif
-  return scalar_in_box(points, count, box);
+  return scalar_in_box;
+}
+
+std::uint64_t points_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& box,
+                            BoxScan scan) {
+  return points_in_box_function(scan)(xs, ys, count, box);
 }
 
 }  // namespace pear::detail

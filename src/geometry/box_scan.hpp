@@ -1,10 +1,11 @@
-// Box tests over columns of coordinates for the small polygons' simplicity check: for each row
-// (an edge's box), whether any box in its ranges meets it. Most rows meet nothing (2% of the
-// counties' rows do), so the cost is the comparisons: four boxes a step with AVX2 where the
-// processor has it (chosen at run time), two with SSE2 (x86-64's baseline), one elsewhere, all
-// without a branch on the data. Intrinsics, not GCC's vector types, whose comparison masks
-// GCC 12 takes apart lane by lane. The small clipper's ear test asks the same of points: which
-// of up to 64 lie in the ear's box.
+// Box tests over columns of coordinates: for each row (a box), whether any box in its ranges
+// meets it (the simplicity check of few edges), and which of up to 64 points lie in a box (the
+// bit-set clipper's ear test). Most rows meet nothing (2% of the counties' rows do), so the cost
+// is the comparisons: four boxes a step with AVX2 where the processor has it (chosen at run
+// time), two with SSE2 (x86-64's baseline), one elsewhere, all without a branch on the data.
+// Intrinsics, not GCC's vector types, whose comparison masks GCC 12 takes apart lane by lane.
+// The columns are the caller's, sized for its own limits; they must be readable up to a
+// multiple of four entries (padding), since the lanes past the end are loaded and masked off.
 #pragma once
 
 #include <array>
@@ -18,22 +19,15 @@ struct Box {
   double x0, y0, x1, y1;
 };
 
-/// Boxes as a column per side, padded so that a four-wide load past the last box stays inside.
+/// Boxes as a column per side (the caller's arrays, padded by at least three entries).
 struct BoxColumns {
-  static constexpr std::uint32_t capacity = 128;
-  std::array<double, capacity + 4> x0{}, y0{}, x1{}, y1{};
+  const double *x0, *y0, *x1, *y1;
   Box box(std::uint32_t i) const { return {x0[i], y0[i], x1[i], y1[i]}; }
 };
 
 /// The boxes row `row` is tested against: [from, to) and [from2, to2) (empty ranges allowed).
 struct RowRanges {
   std::uint32_t row, from, to, from2, to2;
-};
-
-/// Up to 64 points as a column per coordinate, padded so that a four-wide load stays inside.
-struct PointColumns {
-  static constexpr std::uint32_t capacity = 64;
-  std::array<double, capacity + 4> x{}, y{};
 };
 
 /// Which instructions rows_meeting and points_in_box use: the best the processor has, or one
@@ -45,8 +39,15 @@ enum class BoxScan : std::uint8_t { best, sse2, scalar };
 void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
                   std::span<std::uint64_t> meets, BoxScan scan = BoxScan::best);
 
-/// Bit i set when point i of [0, count) (count <= 64) lies in `box`, sides included.
-std::uint64_t points_in_box(const PointColumns& points, std::uint32_t count, const Box& box,
+/// Bit i set when point (xs[i], ys[i]) of i in [0, count) (count <= 64) lies in `box`, sides
+/// included. xs and ys hold at least count rounded up to a multiple of four values.
+std::uint64_t points_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& box,
                             BoxScan scan = BoxScan::best);
+
+/// points_in_box for one instruction set, chosen once: a caller that asks many times (an ear
+/// test per step) calls it directly instead of choosing again each time.
+using PointsInBox = std::uint64_t (*)(const double* xs, const double* ys, std::uint32_t count,
+                                      const Box& box);
+PointsInBox points_in_box_function(BoxScan scan = BoxScan::best);
 
 }  // namespace pear::detail

@@ -30,8 +30,10 @@ bool ChainClipper::is_ear(std::uint32_t v) const {
 /// until v is popped (see EarClipper::offer).
 void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
-  if (!own(b.prev[v]) || !own(b.next[v]) || !(b.turn(v) > 0)) return;
-  queue_.push(ear_bucket(b, v, heuristic_), {v, s_->stamp[v]},
+  if (!own(b.prev[v]) || !own(b.next[v])) return;
+  const double turn = b.turn(v);
+  if (!(turn > 0)) return;
+  queue_.push(ear_bucket(b, v, heuristic_, turn), {v, s_->stamp[v]},
               (v - first_node_) / EarQueue::block_nodes);
 }
 

@@ -67,8 +67,8 @@ Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const
     w.ring_offsets.push_back(static_cast<std::uint32_t>(batch.ring_offsets[r] - span.first_point));
   w.diagnostics.clear();
   DelaunayStatistics flips;
-  const Status status = w.engine->triangulate(PolygonView{w.points, w.ring_offsets}, options,
-                                              w.triangles, w.diagnostics, flips);
+  const Status status = w.engine->run(PolygonView{w.points, w.ring_offsets}, options, w.triangles,
+                                      w.diagnostics, flips);
   const auto base = static_cast<std::uint32_t>(span.first_point);
   for (const auto& t : w.triangles)
     chunk.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});

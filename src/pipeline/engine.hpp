@@ -1,6 +1,7 @@
-// One run of the pipeline: clean -> check (-> split T-junctions) -> bridge -> clip (sequential or a
-// parallel variant) -> CDT. The stages are functions of the algorithm folders; the engine owns
-// their buffers, so a reused engine allocates nothing once warm.
+// One run of the pipeline, the same for every polygon: clean -> check (-> split T-junctions) ->
+// bridge -> untangle touching points -> clip (sequentially or by a parallel variant) -> CDT ->
+// report. Each stage picks its own strategy by size (docs/architecture.md); the engine owns
+// every stage's buffers, so a reused engine allocates nothing once warm.
 #pragma once
 
 #include <memory>
@@ -10,7 +11,6 @@
 #include "core/stage.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/ear_clipper.hpp"
-#include "earclip/small_clipper.hpp"
 #include "earclip/touching.hpp"
 #include "pear/detail/flat_polygon.hpp"
 #include "simplicity/simplicity.hpp"
@@ -20,11 +20,11 @@ namespace pear::detail {
 
 class Engine {
  public:
-  /// Triangulates `input` into `out` (cleared first).
-  /// Parallel stages run where Workers::runner(options) says, looked up only when a stage
-  /// needs threads: a sequential run, and every small polygon, never touches an executor.
-  Status triangulate(const PolygonView& input, const Options& options, TriangleList& out,
-                     std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  /// Triangulates `input` into `out` (cleared first), appending to `diagnostics`. Parallel
+  /// stages run where Workers::runner(options) says, looked up only when a stage needs
+  /// threads: a sequential run, and every small polygon, never touches an executor.
+  Status run(const PolygonView& input, const Options& options, TriangleList& out,
+             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   EarStatistics statistics(const PolygonView& input);
 
   /// Buffers a caller may fill and pass back as input (Triangulator's flattened rings).
@@ -35,35 +35,42 @@ class Engine {
   Workers& workers() { return workers_; }
 
  private:
-  /// The small-polygon path: few vertices, no repeated position; holes are bridged first.
-  /// Returns false when it does not apply or finds the polygon not valid; the general path
-  /// then runs (and names what is wrong).
-  bool triangulate_small(const Options& options, TriangleList& out);
-  /// boundary_ from clean_'s rings, the holes joined by bridges; returns the leftmost node of
-  /// every hole that could not be joined.
+  /// What a stage after cleaning found, at the caller's flat index of a vertex; reported (as
+  /// ring and vertex) once, at the end.
+  struct Finding {
+    Issue issue;
+    std::uint32_t vertex;
+  };
+
+  /// The check: conflicts, with T-junctions split when that is all that is wrong.
+  void check(bool find_crossings, const RunContext& ctx);
+  /// After the check found `violation`: splits every edge at the vertices lying inside it,
+  /// each named in a warning, when that is all that is wrong. Returns the violation left (an
+  /// index into clean_), if any.
+  std::optional<std::uint32_t> split_t_junctions(const RunContext& ctx, std::uint32_t violation);
+  /// boundary_ from clean_'s rings, the holes joined by bridges; the points where it passes
+  /// more than once relinked, unless the check found that no two rings touch; cycles_ set.
+  void bridge(bool checked, const RunContext& ctx);
+  /// boundary_ from clean_'s rings; returns the leftmost node of every hole that could not be
+  /// joined.
   std::vector<std::uint32_t> bridge_holes();
   /// After untangling: whether a hole passes one of its points twice.
   bool hole_touches_itself();
-  /// Cleans and bridges; returns false when nothing can be triangulated.
-  bool prepare(const PolygonView& input, bool check_simplicity, const RunContext& ctx,
-               std::vector<Diagnostic>& diagnostics, Status& status);
-  /// Clips the prepared boundary with `algorithm`; false when a best-effort fallback acted.
+  /// Clips every cycle with `algorithm`; false when a best-effort fallback acted.
   bool clip(Algorithm algorithm, const Options& options, const RunContext& ctx, TriangleList& out,
             std::uint32_t& best_effort_vertex);
   /// The algorithm on the first cycle, the sequential engine on what it leaves.
   bool clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                  TriangleList& out, std::uint32_t& best_effort_vertex);
-  /// After find_violation found `violation`: splits every edge at the vertices lying inside it,
-  /// each named in a warning, when that is all that is wrong. Returns the violation left (an
-  /// index into clean_), if any.
-  std::optional<std::uint32_t> split_t_junctions(const PolygonView& input, const RunContext& ctx,
-                                                 std::uint32_t violation,
-                                                 std::vector<Diagnostic>& diagnostics);
-  /// Why a polygon whose check (when `checked`) found no conflict is not valid after all: a
-  /// misplaced hole if there is one, else not_simple at `vertex` (where the boundary overlaps
-  /// itself, or where clipping stopped short).
-  Diagnostic why_not_valid(const PolygonView& input, bool checked, std::uint32_t vertex) const;
-  Diagnostic locate(const PolygonView& input, Issue issue, std::uint32_t caller_index) const;
+  /// A misplaced hole, if the check passed (rings meet only at shared vertices), else
+  /// not_simple at `vertex`: why a polygon is not valid although no conflict was found.
+  Finding why_not_valid(bool checked, std::uint32_t vertex) const;
+  void found(Issue issue, std::uint32_t caller_index) {
+    findings_.push_back({issue, caller_index});
+  }
+  bool found_not_simple() const;
+  /// The findings as diagnostics in the caller's numbering, and the status they make.
+  Status report(const PolygonView& input, std::vector<Diagnostic>& diagnostics) const;
 
   Workers workers_;  ///< a private executor for Options::threads, kept between runs
   FlatPolygon input_;
@@ -72,14 +79,14 @@ class Engine {
   CleanPolygon split_;  ///< clean_ with its T-junctions split, swapped with it
   Boundary boundary_;
   SimplicityCheck simplicity_;
+  Verdict verdict_;
   HoleBridger bridger_;
   TouchingPoints touching_;
+  SharedPositions shared_;             ///< what the clipper learns of repeated positions
   std::vector<std::uint32_t> cycles_;  ///< one node per region to clip, the main one first
   Boundary part_;                      ///< a region copied out of boundary_
   EarClipper clipper_;
-  SmallClipper small_;
-  std::vector<Point> ring_points_;  ///< the bridged boundary as one ring, for small_
-  std::vector<std::uint32_t> ring_original_;
+  std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
 };
 

@@ -34,7 +34,7 @@ Status Triangulator::run(const PolygonView& polygon, const Options& options,
                          std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   if (!engine_) engine_ = detail::acquire_engine();
   if (options.profile) options.profile->phases.clear();
-  return engine_->triangulate(polygon, options, triangles, diagnostics, delaunay);
+  return engine_->run(polygon, options, triangles, diagnostics, delaunay);
 }
 
 EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {

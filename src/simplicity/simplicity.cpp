@@ -198,42 +198,69 @@ void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
 
 namespace {
 
-/// check_small's look at edges e and f whose boxes meet in x: records a shared endpoint
-/// position, and a conflict (as its smaller edge) when it is smaller than `smallest`.
+/// The few-edges strategies' shared set-up, sequentially: each edge's successor, its box handed
+/// to `store(e, a, b)`; returns the smallest edge of a fold-back (a ring turning straight back
+/// over itself, the one way neighbours conflict) when `find_folds`, else none.
+template <class Store>
+std::uint32_t link_edges(const CleanPolygon& polygon, RingEdges& edges, bool find_folds,
+                         Store&& store) {
+  const auto& pts = polygon.points;
+  edges.points = &pts;
+  edges.next.resize(pts.size());
+  std::uint32_t smallest = SmallestViolation::none;
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
+    for (std::uint32_t e = first; e <= last; ++e) {
+      const std::uint32_t f = e == last ? first : e + 1, before = e == first ? last : e - 1;
+      edges.next[e] = f;
+      const Point &a = pts[e], &b = pts[f];
+      store(e, a, b);
+      if (!find_folds) continue;
+      const Point& p = pts[before];
+      if (before < smallest && orient2d(p, a, b) == 0 &&
+          (on_open_segment(p, a, b) || on_open_segment(b, p, a) || p == b))
+        smallest = std::min(before, e);
+    }
+  }
+  return smallest;
+}
+
+/// A look at edges e and f whose boxes meet in x: records a shared endpoint position, and a
+/// conflict (as its smaller edge) when it is smaller than `smallest`.
 void visit_pair(const RingEdges& edges, std::uint32_t e, std::uint32_t f, bool find_crossings,
-                std::uint32_t& smallest, SmallVerdict& verdict) {
+                std::uint32_t& smallest, bool& touching) {
   const EdgeBox &s = edges.boxes[e], &t = edges.boxes[f];
   // One branch (`&`): most pairs are apart in y, which the predictor then learns.
   const std::uint32_t after_e = edges.next[e], after_f = edges.next[f];
   if (!((t.y0 <= s.y1) & (s.y0 <= t.y1) & (after_e != f) & (after_f != e))) return;
   const auto& pts = *edges.points;
   const Point &a = pts[e], &b = pts[edges.next[e]], &c = pts[f], &d = pts[edges.next[f]];
-  if (a == c || a == d || b == c || b == d) verdict.touching = true;
+  if (a == c || a == d || b == c || b == d) touching = true;
   if (find_crossings && std::min(e, f) < smallest && edges.conflict(e, f))
     smallest = std::min(e, f);
 }
 
+Verdict verdict_of(std::uint32_t smallest, bool touching) {
+  Verdict verdict;
+  if (smallest != SmallestViolation::none) verdict.violation = smallest;
+  verdict.touching = touching ? Verdict::Touching::yes : Verdict::Touching::no;
+  return verdict;
+}
+
 }  // namespace
 
-SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool find_crossings) {
+/// Every pair of edges that are not neighbours, by branch-free box tests of rows (an edge
+/// against the edges after it), then the exact tests for the few rows where boxes meet.
+Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  const auto& pts = polygon.points;
-  BoxColumns& c = columns_;
-  edges_.points = &pts;
-  edges_.next.resize(n);
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
-    for (std::uint32_t e = first; e < end; ++e) {
-      const std::uint32_t f = e + 1 == end ? first : e + 1;
-      edges_.next[e] = f;
-      const Point &a = pts[e], &b = pts[f];
-      c.x0[e] = std::min(a.x, b.x), c.y0[e] = std::min(a.y, b.y);
-      c.x1[e] = std::max(a.x, b.x), c.y1[e] = std::max(a.y, b.y);
-    }
-  }
-  // Every pair of edges that are not neighbours: edge e of ring [first, end) meets the edges
-  // after it but e + 1 (unless e ends the ring) and, for e == first, end - 1. Neighbours
-  // conflict only by folding back at their shared vertex, and clean_polygon leaves no such tip.
+  auto& [x0, y0, x1, y1] = columns_;
+  link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
+    x0[e] = std::min(a.x, b.x), y0[e] = std::min(a.y, b.y);
+    x1[e] = std::max(a.x, b.x), y1[e] = std::max(a.y, b.y);
+  });
+  // Edge e of ring [first, end) meets the edges after it but e + 1 (unless e ends the ring)
+  // and, for e == first, end - 1. Neighbours conflict only by folding back at their shared
+  // vertex, and clean_polygon leaves no such tip.
   rows_.clear();
   std::size_t ring = 0;
   for (std::uint32_t e = 0; e + 1 < n; ++e) {
@@ -242,13 +269,13 @@ SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool 
     const std::uint32_t start = e + 1 == end ? e + 1 : e + 2;
     rows_.push_back({e, start, e == first ? end - 1 : n, e == first ? end : n, n});
   }
-  std::array<std::uint64_t, BoxColumns::capacity / 64> meets;
+  const BoxColumns c{x0.data(), y0.data(), x1.data(), y1.data()};
+  std::array<std::uint64_t, few_edges_limit / 64> meets;
   rows_meeting(c, rows_, meets);
   // A row is looked at again only when a box meets (2% of the rows of the counties); the boxes
   // are copied for the exact tests only then.
-  SmallVerdict verdict;
   std::uint32_t smallest = SmallestViolation::none;
-  bool indexed = false;
+  bool touching = false, indexed = false;
   for (std::uint32_t w = 0; w < meets.size(); ++w) {
     for (std::uint64_t set = meets[w]; set != 0; set &= set - 1) {
       const RowRanges& r = rows_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(set))];
@@ -260,46 +287,31 @@ SmallVerdict SimplicityCheck::check_few_edges(const CleanPolygon& polygon, bool 
       const Box box = c.box(r.row);
       for (const auto& [from, to] : {std::pair(r.from, r.to), std::pair(r.from2, r.to2)})
         for (std::uint32_t f = from; f < to; ++f)
-          if (c.x0[f] <= box.x1 && box.x0 <= c.x1[f])
-            visit_pair(edges_, r.row, f, find_crossings, smallest, verdict);
+          if (x0[f] <= box.x1 && box.x0 <= x1[f])
+            visit_pair(edges_, r.row, f, find_crossings, smallest, touching);
     }
   }
-  if (smallest != SmallestViolation::none) verdict.violation = smallest;
-  return verdict;
+  return verdict_of(smallest, touching);
 }
 
-SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find_crossings) {
+/// Every pair of edges from two runs monotone in x whose x-ranges meet.
+Verdict SimplicityCheck::check_chains(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  if (n <= BoxColumns::capacity) return check_few_edges(polygon, find_crossings);
-  SmallVerdict verdict;
-  const auto& pts = polygon.points;
-  edges_.points = &pts;
-  edges_.next.resize(n);
   edges_.boxes.resize(n);
   direction_.resize(n);
-  std::uint32_t smallest = SmallestViolation::none;
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
-    for (std::uint32_t e = first; e <= last; ++e) {
-      const std::uint32_t f = e == last ? first : e + 1, before = e == first ? last : e - 1;
-      edges_.next[e] = f;
-      const Point &a = pts[e], &b = pts[f];
-      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                         std::max(a.y, b.y)};
-      direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
-      // Neighbours conflict only by folding back over each other at their shared vertex.
-      const Point& p = pts[before];
-      if (find_crossings && before < smallest && orient2d(p, a, b) == 0 &&
-          (on_open_segment(p, a, b) || on_open_segment(b, p, a) || p == b))
-        smallest = std::min(before, e);
-    }
-  }
+  std::uint32_t smallest = link_edges(
+      polygon, edges_, find_crossings, [&](std::uint32_t e, const Point& a, const Point& b) {
+        edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                           std::max(a.y, b.y)};
+        direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
+      });
+  bool touching = false;
   const auto& boxes = edges_.boxes;
   const auto visit = [&](std::uint32_t e, std::uint32_t f) {
-    visit_pair(edges_, e, f, find_crossings, smallest, verdict);
+    visit_pair(edges_, e, f, find_crossings, smallest, touching);
   };
-  // Every pair of edges from two runs whose x-ranges meet: for each edge of the run that
-  // starts first, a window of the other run's edges (both in increasing x).
+  // For each edge of the run that starts first, a window of the other run's edges (both in
+  // increasing x).
   monotone_chains(polygon);
   for (std::size_t i = 0; i < chains_.size(); ++i) {
     for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
@@ -320,7 +332,26 @@ SmallVerdict SimplicityCheck::check_small(const CleanPolygon& polygon, bool find
       for (std::uint32_t f = e + 1; f < n; ++f)
         if (boxes[f].x0 <= boxes[e].x1 && boxes[e].x0 <= boxes[f].x1) visit(e, f);
   }
-  if (smallest != SmallestViolation::none) verdict.violation = smallest;
+  return verdict_of(smallest, touching);
+}
+
+Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ctx,
+                               bool find_crossings) {
+  const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  Verdict verdict;
+  if (n > chains_limit) {
+    // Parallel on ctx's runner; records its own phases in the profile.
+    if (find_crossings) verdict.violation = find_violation(polygon, ctx);
+    return verdict;
+  }
+  ctx.run_serial("check simplicity", [&] {
+    verdict = n <= few_edges_limit ? check_all_pairs(polygon, find_crossings)
+                                   : check_chains(polygon, find_crossings);
+  });
+  // With few edges a hole that is not where a hole may be is cheap to find at once.
+  if (find_crossings && !verdict.violation && verdict.touching == Verdict::Touching::no &&
+      polygon.ring_count() > 1)
+    verdict.misplaced = find_misplaced_hole_among_few(polygon);
   return verdict;
 }
 

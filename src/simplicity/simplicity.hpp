@@ -119,20 +119,38 @@ struct MisplacedHole {
 /// the engine could not triangulate, to name why.
 std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon);
 /// find_misplaced_hole for rings that share no vertex position and whose edges do not conflict
-/// (check_small found none touching): a ray from each hole's first vertex against every edge
-/// of the other rings, nothing to set up. For small polygons: holes times vertices tests.
+/// (the check found none touching): a ray from each hole's first vertex against every edge of
+/// the other rings, nothing to set up. For few edges: holes times vertices tests.
 std::optional<MisplacedHole> find_misplaced_hole_among_few(const CleanPolygon& polygon);
 
-/// What the small check (SimplicityCheck::check_small) found.
-struct SmallVerdict {
-  std::optional<std::uint32_t> violation;  ///< as find_violation's
-  /// Two edges that are not neighbours share an endpoint position. Exact when there is no
-  /// violation (a ring folding back on itself may hide a touching pair).
-  bool touching = false;
+/// What SimplicityCheck::check found.
+struct Verdict {
+  /// The first vertex of the smallest edge in a conflict, as find_violation gives it.
+  std::optional<std::uint32_t> violation;
+  /// Whether two edges that are not neighbours share an endpoint position (rings touching at
+  /// vertices): the engine then relinks the passes through such points (TouchingPoints).
+  /// Known exactly for few edges when there is no violation (a ring folding back on itself
+  /// may hide a touching pair); unknown from the grid and the sweep.
+  enum class Touching : std::uint8_t { no, yes, unknown } touching = Touching::unknown;
+  /// For few edges that neither conflict nor touch, with holes: the first hole not inside the
+  /// outer ring or inside another hole (find_misplaced_hole_among_few). Not asked otherwise:
+  /// the engine names such a hole when it cannot clip the polygon (find_misplaced_hole).
+  std::optional<MisplacedHole> misplaced;
 };
 
 class SimplicityCheck {
  public:
+  /// Up to this many edges, every pair is tested by branch-free box tests; up to
+  /// chains_limit, pairs of runs monotone in x; beyond, the grid and the sweep
+  /// (find_violation). Measured: docs/engine.md, "Strategies".
+  static constexpr std::uint32_t few_edges_limit = 128;
+  static constexpr std::uint32_t chains_limit = 384;
+
+  /// The check, by the strategy that suits the size. `find_crossings` false asks only whether
+  /// rings touch (no orientation tests), for runs that skip the check; beyond chains_limit
+  /// that is not asked at all (unknown).
+  Verdict check(const CleanPolygon& polygon, const RunContext& ctx, bool find_crossings);
+
   /// `grid_only` (never a sweep, tiny cells: every level of the grid is exercised) and
   /// `sweep_only` (three slabs) are for tests that compare the methods on small inputs.
   enum class Method : std::uint8_t { automatic, grid_only, sweep_only };
@@ -151,20 +169,16 @@ class SimplicityCheck {
   TJunctionSearch find_t_junctions(const CleanPolygon& polygon, const RunContext& ctx,
                                    Method method = Method::automatic);
 
-  /// For small polygons (up to a few hundred edges), sequentially: every pair of at most 128
-  /// edges by branch-free box tests; beyond, pairs of runs monotone in x. Finds every
-  /// conflict, so the violation is the one find_violation reports; `find_crossings` false only
-  /// looks for touching (no orientation tests), for runs that skip the check.
-  SmallVerdict check_small(const CleanPolygon& polygon, bool find_crossings);
-
  private:
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
+  Verdict check_all_pairs(const CleanPolygon& polygon, bool find_crossings);
+  Verdict check_chains(const CleanPolygon& polygon, bool find_crossings);
+  void monotone_chains(const CleanPolygon& polygon);
 
   RingEdges edges_;
   RootGrid root_;
-  void monotone_chains(const CleanPolygon& polygon);
 
-  /// check_small's runs of edges along which x never reverses (chain_order_[begin, end), in
+  /// check_chains' runs of edges along which x never reverses (chain_order_[begin, end), in
   /// increasing x), sorted by where their x-ranges start.
   struct Chain {
     std::uint32_t begin, end;
@@ -175,12 +189,10 @@ class SimplicityCheck {
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
 
-  /// check_small's edge boxes of rings of at most BoxColumns::capacity edges in all, a column
-  /// per side, and the pairs to test as rows (geometry/box_scan.hpp).
-  BoxColumns columns_;
+  /// check_all_pairs' edge boxes, a column per side (padded for four-wide loads), and the
+  /// pairs to test as rows (geometry/box_scan.hpp).
+  std::array<std::array<double, few_edges_limit + 4>, 4> columns_{};
   std::vector<RowRanges> rows_;
-  /// check_small for rings of at most BoxColumns::capacity edges in all.
-  SmallVerdict check_few_edges(const CleanPolygon& polygon, bool find_crossings);
 };
 
 }  // namespace pear::detail

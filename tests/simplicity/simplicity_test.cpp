@@ -158,15 +158,16 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
     for (const RunContext& ctx : contexts.list)
       EXPECT_EQ(check.find_violation(polygon, ctx, method), first) << "deterministic";
   }
-  // The small polygons' check sees every pair too (all pairs up to 128 edges in all rings,
-  // runs monotone in x otherwise), and says whether the rings pass a point twice.
-  if (polygon.points.size() <= 1024) {
-    const SmallVerdict small = check.check_small(polygon, true);
-    EXPECT_EQ(small.violation, expected) << "check_small";
-    if (!expected) {
-      EXPECT_EQ(small.touching, reference.touching()) << "check_small touching";
-      EXPECT_EQ(check.check_small(polygon, false).touching, small.touching) << "touching only";
-    }
+  // The strategies for few edges see every pair too (all pairs up to 128 edges in all rings,
+  // runs monotone in x up to 384), and say whether the rings pass a point twice.
+  const Verdict verdict = check.check(polygon, contexts.list[0], true);
+  ASSERT_EQ(verdict.violation.has_value(), expected.has_value()) << "check";
+  if (polygon.points.size() > SimplicityCheck::chains_limit) return;  // the automatic method
+  EXPECT_EQ(verdict.violation, expected) << "check";
+  if (!expected) {
+    const auto touching = reference.touching() ? Verdict::Touching::yes : Verdict::Touching::no;
+    EXPECT_EQ(verdict.touching, touching) << "check's touching";
+    EXPECT_EQ(check.check(polygon, contexts.list[0], false).touching, touching) << "touching only";
   }
 }
 
@@ -177,14 +178,17 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
 TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> coordinate(0, 40), length(0, 6);
-  BoxColumns c;
+  constexpr std::uint32_t capacity = 128;
+  std::array<std::array<double, capacity + 4>, 4> columns{};
+  auto& [x0, y0, x1, y1] = columns;
+  const BoxColumns c{x0.data(), y0.data(), x1.data(), y1.data()};
   for (int round = 0; round < 300; ++round) {
-    const std::uint32_t n = 1 + static_cast<std::uint32_t>(rng() % BoxColumns::capacity);
+    const std::uint32_t n = 1 + static_cast<std::uint32_t>(rng() % capacity);
     const double scale = round % 3 == 0 ? 0x1p-180 : round % 3 == 1 ? 1.0 : 0x1p180;
     for (std::uint32_t i = 0; i < n; ++i) {
       const double x = coordinate(rng), y = coordinate(rng);
-      c.x0[i] = x * scale, c.x1[i] = (x + length(rng)) * scale;
-      c.y0[i] = y * scale, c.y1[i] = (y + length(rng)) * scale;
+      x0[i] = x * scale, x1[i] = (x + length(rng)) * scale;
+      y0[i] = y * scale, y1[i] = (y + length(rng)) * scale;
     }
     std::vector<RowRanges> rows;
     for (std::uint32_t k = 0; k < 2 * n; ++k) {
@@ -192,8 +196,8 @@ TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
       rows.push_back({static_cast<std::uint32_t>(rng() % n), std::min(a, b), std::max(a, b), d,
                       k % 4 == 0 ? n : d});
     }
-    if (rows.size() > BoxColumns::capacity) rows.resize(BoxColumns::capacity);
-    std::array<std::uint64_t, BoxColumns::capacity / 64> best, sse2, scalar;
+    if (rows.size() > capacity) rows.resize(capacity);
+    std::array<std::uint64_t, capacity / 64> best, sse2, scalar;
     rows_meeting(c, rows, best, BoxScan::best);
     rows_meeting(c, rows, sse2, BoxScan::sse2);
     rows_meeting(c, rows, scalar, BoxScan::scalar);
@@ -220,23 +224,23 @@ TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
 TEST(BoxScan, PointsInBoxAgreeWithBruteForce) {
   std::mt19937 rng(11);
   std::uniform_int_distribution<int> coordinate(0, 12);
-  PointColumns p;
+  std::array<double, 64 + 4> xs{}, ys{};
   for (int round = 0; round < 400; ++round) {
-    const std::uint32_t n = static_cast<std::uint32_t>(round % (PointColumns::capacity + 1));
+    const std::uint32_t n = static_cast<std::uint32_t>(round % 65);
     const double scale = round % 3 == 0 ? 0x1p-180 : round % 3 == 1 ? 1.0 : 0x1p180;
     for (std::uint32_t i = 0; i < n; ++i)
-      p.x[i] = coordinate(rng) * scale, p.y[i] = coordinate(rng) * scale;
-    for (std::uint32_t i = n; i < p.x.size(); ++i) p.x[i] = p.y[i] = 5 * scale;  // in the box
-    if (n > 3) p.x[n / 2] = std::numeric_limits<double>::quiet_NaN();
+      xs[i] = coordinate(rng) * scale, ys[i] = coordinate(rng) * scale;
+    for (std::uint32_t i = n; i < xs.size(); ++i) xs[i] = ys[i] = 5 * scale;  // in the box
+    if (n > 3) xs[n / 2] = std::numeric_limits<double>::quiet_NaN();
     const Box box{4 * scale, 3 * scale, 8 * scale, 9 * scale};
     std::uint64_t expected = 0;
     for (std::uint32_t i = 0; i < n; ++i)
-      if (p.x[i] >= box.x0 && p.x[i] <= box.x1 && p.y[i] >= box.y0 && p.y[i] <= box.y1)
+      if (xs[i] >= box.x0 && xs[i] <= box.x1 && ys[i] >= box.y0 && ys[i] <= box.y1)
         expected |= std::uint64_t{1} << i;
     SCOPED_TRACE("round " + std::to_string(round));
-    ASSERT_EQ(points_in_box(p, n, box, BoxScan::best), expected);
-    ASSERT_EQ(points_in_box(p, n, box, BoxScan::sse2), expected);
-    ASSERT_EQ(points_in_box(p, n, box, BoxScan::scalar), expected);
+    ASSERT_EQ(points_in_box(xs.data(), ys.data(), n, box, BoxScan::best), expected);
+    ASSERT_EQ(points_in_box(xs.data(), ys.data(), n, box, BoxScan::sse2), expected);
+    ASSERT_EQ(points_in_box(xs.data(), ys.data(), n, box, BoxScan::scalar), expected);
   }
 }
 

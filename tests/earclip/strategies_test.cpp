@@ -1,21 +1,24 @@
-// The small-polygon path (src/earclip/small_clipper.cpp, chosen by the pipeline for one ring of
-// at most 384 vertices): on simple rings of every synthetic family, with collinear runs added,
-// and on rectilinear staircases, it must give n - 2 triangles that the validator accepts, for
-// `top` and `fast`; through the public API its results must be as valid as the general
-// engine's on the same polygons; on rings that are not simple it must end and either say so
-// or leave a result (the check, which the pipeline runs first, is what promises validity).
+// The ear clipper's strategies: the bit sets (src/earclip/bitset_clipper.cpp, which EarClipper
+// takes for boundaries of at most 384 nodes) and the queue. The bit sets on simple rings of
+// every synthetic family, with collinear runs added, and on rectilinear staircases, must give
+// n - 2 triangles that the validator accepts, for `top` and `fast`; on rings that are not simple
+// they must end and either clip everything or leave the rest linked for the queue. Both
+// strategies on the same bridged boundaries (holes included) must give valid triangulations of
+// the same size and, for `top`, angles within 10% of each other.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <random>
 #include <string>
 
-#include "earclip/small_clipper.hpp"
+#include "clean/clean.hpp"
+#include "earclip/bitset_clipper.hpp"
+#include "earclip/bridge.hpp"
+#include "earclip/ear_clipper.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
 #include "pear/quality.hpp"
 #include "pear/validate.hpp"
-#include "clean/clean.hpp"
 
 namespace pear::detail {
 namespace {
@@ -57,19 +60,45 @@ Polygon staircase(int steps) {
   return {ring};
 }
 
+/// The boundary of a cleaned polygon, its holes joined by bridges (as the engine builds it).
+Boundary bridged(const CleanPolygon& clean) {
+  Boundary b;
+  for (std::size_t r = 0; r < clean.ring_count(); ++r) {
+    const std::uint32_t first = clean.ring_starts[r], last = clean.ring_starts[r + 1] - 1;
+    for (std::uint32_t i = first; i <= last; ++i) b.add(clean.points[i], clean.original[i]);
+    for (std::uint32_t i = first; i < last; ++i) b.link(i, i + 1);
+    b.link(last, first);
+  }
+  HoleBridger bridger;
+  EXPECT_TRUE(bridger.join(clean, b).empty());
+  return b;
+}
+
+/// The nodes of the cycle through v.
+std::size_t cycle_length(const Boundary& b, std::uint32_t v) {
+  std::size_t n = 0;
+  std::uint32_t u = v;
+  do {
+    ++n;
+    u = b.next[u];
+  } while (u != v && n <= b.size());
+  return n;
+}
+
 void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
   const CleanPolygon clean = cleaned(polygon);
   ASSERT_EQ(clean.ring_count(), 1u);
-  ASSERT_LE(clean.points.size(), SmallClipper::max_nodes);
-  SmallClipper clipper;
+  ASSERT_LE(clean.points.size(), BitsetClipper::max_nodes);
+  Boundary b = bridged(clean);
+  BitsetClipper clipper;
   TriangleList out;
-  ASSERT_TRUE(clipper.run(clean.points, clean.original, heuristic, out));
+  ASSERT_TRUE(clipper.clip(b, 0, heuristic, out, nullptr));
   EXPECT_EQ(out.size(), clean.points.size() - 2);
   const ValidationReport report = validate(polygon, out);
   EXPECT_TRUE(report.valid) << (report.messages.empty() ? "" : report.messages.front());
 }
 
-TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
+TEST(BitsetClipper, SyntheticFamiliesAreClippedValidly) {
   int polygons = 0;
   for (std::string_view kind : {"star", "comb", "koch", "hilbert", "random"}) {
     for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u}) {
@@ -80,7 +109,7 @@ TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
         } catch (const std::invalid_argument&) {
           continue;  // the family has no polygon of this size
         }
-        if (polygon.size() != 1 || polygon[0].size() > SmallClipper::max_nodes) continue;
+        if (polygon.size() != 1 || polygon[0].size() > BitsetClipper::max_nodes) continue;
         SCOPED_TRACE(std::string(kind) + " " + std::to_string(n) + " seed " + std::to_string(seed));
         for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast})
           expect_valid_clip(polygon, h);
@@ -91,7 +120,7 @@ TEST(SmallClipper, SyntheticFamiliesAreClippedValidly) {
   EXPECT_GT(polygons, 100);
 }
 
-TEST(SmallClipper, CollinearRunsAndStaircases) {
+TEST(BitsetClipper, CollinearRunsAndStaircases) {
   for (int steps : {1, 2, 5, 15, 31}) {
     SCOPED_TRACE("staircase " + std::to_string(steps));
     for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
@@ -104,7 +133,7 @@ TEST(SmallClipper, CollinearRunsAndStaircases) {
   for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) expect_valid_clip(square, h);
 }
 
-TEST(SmallClipper, RingsThatAreNotSimpleEndAndLeaveOutputAloneWhenRefused) {
+TEST(BitsetClipper, RingsThatAreNotSimpleEndAndLeaveTheRestLinked) {
   std::mt19937 rng(7);
   std::uniform_int_distribution<int> coordinate(0, 6), count(4, 40);
   int refused = 0;
@@ -119,88 +148,67 @@ TEST(SmallClipper, RingsThatAreNotSimpleEndAndLeaveOutputAloneWhenRefused) {
     if (clean_polygon(PolygonView{flat.points, flat.ring_starts}, clean, diagnostics) != Status::ok)
       continue;
     for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
-      SmallClipper clipper;
+      Boundary b = bridged(clean);
+      BitsetClipper clipper;
       TriangleList out{{7, 7, 7}};
-      if (clipper.run(clean.points, clean.original, h, out)) {
-        EXPECT_EQ(out.size(), clean.points.size() - 1);  // the sentinel and n - 2 triangles
+      const std::size_t n = clean.points.size();
+      if (clipper.clip(b, 0, h, out, nullptr)) {
+        EXPECT_EQ(out.size(), n - 1);  // the sentinel and n - 2 triangles
       } else {
         ++refused;
-        ASSERT_EQ(out.size(), 1u);
         EXPECT_EQ(out[0][0], 7u);
+        // One node left the cycle per triangle; the rest is still linked, for the queue.
+        EXPECT_EQ(cycle_length(b, clipper.anchor()), n - (out.size() - 1));
       }
     }
   }
   EXPECT_GT(refused, 0);
 }
 
-std::size_t polygon_size(const Polygon& polygon) {
-  std::size_t n = 0;
-  for (const Ring& ring : polygon) n += ring.size();
-  return n;
-}
-
-/// The general engine: partition-and-cut with one partition.
-Options general_engine(EarHeuristic heuristic) {
-  Options general;
-  general.algorithm = Algorithm::partition_and_cut;
-  general.partitions = 1;
-  general.threads = 1;
-  general.heuristic = heuristic;
-  return general;
-}
-
-/// The pipeline's choice against the general engine, with both heuristics: the same status
-/// (ok) and count, both results valid, `top`'s angles within 10% (the same order up to the
-/// general queue's buckets). Up to the small path's limit (its vertices and two per hole) it
-/// did the work: the general path's phases are absent.
-void expect_small_path_agrees(Triangulator& triangulator, const Polygon& polygon) {
+/// Both strategies of EarClipper on the bridged boundary, with both heuristics: valid
+/// triangulations of the same size, `top`'s angles within 10% (the same order up to the
+/// queue's buckets).
+void expect_strategies_agree(const Polygon& polygon) {
+  const CleanPolygon clean = cleaned(polygon);
   for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
-    Options small;
-    small.heuristic = h;
-    small.threads = 1;
-    RunProfile profile;
-    small.profile = &profile;
-    const auto a = triangulator.triangulate(polygon, small);
-    const auto b = triangulator.triangulate(polygon, general_engine(h));
-    ASSERT_EQ(a.status, Status::ok);
-    ASSERT_EQ(b.status, Status::ok);
-    const bool general_ran = std::any_of(profile.phases.begin(), profile.phases.end(),
-                                         [](const auto& p) { return p.name == "bridge holes"; });
-    EXPECT_EQ(general_ran,
-              polygon_size(polygon) + 2 * (polygon.size() - 1) > SmallClipper::max_nodes);
-    EXPECT_EQ(a.triangles.size(), b.triangles.size());
-    EXPECT_TRUE(validate(polygon, a.triangles).valid);
-    EXPECT_TRUE(validate(polygon, b.triangles).valid);
+    Boundary for_bits = bridged(clean), for_queue = for_bits;
+    ASSERT_LE(for_bits.size(), BitsetClipper::max_nodes);
+    EarClipper clipper;
+    TriangleList bits, queue;
+    ASSERT_TRUE(clipper.run(for_bits, 0, h, bits));
+    ASSERT_TRUE(clipper.run_queue(for_queue, 0, h, queue));
+    EXPECT_EQ(bits.size(), queue.size());
+    EXPECT_TRUE(validate(polygon, bits).valid);
+    EXPECT_TRUE(validate(polygon, queue).valid);
     if (h == EarHeuristic::top) {
-      EXPECT_GT(quality(polygon, a.triangles).min_angle_avg_deg,
-                0.9 * quality(polygon, b.triangles).min_angle_avg_deg);
+      EXPECT_GT(quality(polygon, bits).min_angle_avg_deg,
+                0.9 * quality(polygon, queue).min_angle_avg_deg);
     }
   }
 }
 
-/// One ring, county-like sizes up to the limit and past it.
-TEST(SmallPath, AgreesWithTheGeneralEngine) {
-  Triangulator triangulator;
+/// One ring, county-like sizes up to the bit sets' limit.
+TEST(Strategies, AgreeOnOneRing) {
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u, 500u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
       } catch (const std::invalid_argument&) {
         continue;
       }
+      if (polygon[0].size() > BitsetClipper::max_nodes) continue;
       SCOPED_TRACE(std::string(kind) + " " + std::to_string(n));
-      expect_small_path_agrees(triangulator, polygon);
+      expect_strategies_agree(polygon);
       ++compared;
     }
   }
   EXPECT_GT(compared, 10);
 }
 
-/// Polygons with holes: bridged, then clipped as one ring with repeated bridge ends.
-TEST(SmallPath, HolesAgreeWithTheGeneralEngine) {
-  Triangulator triangulator;
+/// Polygons with holes: one boundary with repeated bridge ends.
+TEST(Strategies, AgreeWithHoles) {
   int compared = 0;
   for (std::string_view kind : {"holes", "random-holes"}) {
     for (std::size_t n : {12u, 20u, 40u, 80u, 150u, 300u}) {
@@ -211,9 +219,11 @@ TEST(SmallPath, HolesAgreeWithTheGeneralEngine) {
         } catch (const std::invalid_argument&) {
           continue;
         }
-        if (polygon.size() < 2) continue;
+        std::size_t nodes = 0;
+        for (const Ring& ring : polygon) nodes += ring.size() + 2;
+        if (polygon.size() < 2 || nodes > BitsetClipper::max_nodes) continue;
         SCOPED_TRACE(std::string(kind) + " " + std::to_string(n) + " seed " + std::to_string(seed));
-        expect_small_path_agrees(triangulator, polygon);
+        expect_strategies_agree(polygon);
         ++compared;
       }
     }
@@ -222,8 +232,8 @@ TEST(SmallPath, HolesAgreeWithTheGeneralEngine) {
 }
 
 /// Holes where a hole may not be, and holes whose bridges share an outer vertex, through the
-/// small path: the same statuses and diagnostics as the general engine's.
-TEST(SmallPath, MisplacedAndCrowdedHoles) {
+/// pipeline: named as not_simple with the hole's ring, or triangulated validly.
+TEST(Strategies, MisplacedAndCrowdedHoles) {
   const Ring square{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
   const Ring hole{{2, 2}, {2, 8}, {8, 8}, {8, 2}};
   const Ring inner{{4, 4}, {4, 6}, {6, 6}, {6, 4}};
@@ -231,27 +241,22 @@ TEST(SmallPath, MisplacedAndCrowdedHoles) {
   struct Case {
     const char* name;
     Polygon polygon;
-    Status status;
     Issue issue;
     std::size_t ring;
   };
   const Case cases[] = {
-      {"hole in a hole", {square, hole, inner}, Status::not_simple, Issue::hole_inside_hole, 2},
-      {"hole beside the outer ring",
-       {square, beside},
-       Status::not_simple,
-       Issue::hole_outside_outer_ring,
-       1},
+      {"hole in a hole", {square, hole, inner}, Issue::hole_inside_hole, 2},
+      {"hole beside the outer ring", {square, beside}, Issue::hole_outside_outer_ring, 1},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.name);
-    const auto small = triangulate(c.polygon);
-    const auto reference = triangulate(c.polygon, general_engine(EarHeuristic::top));
-    EXPECT_EQ(small.status, c.status);
-    EXPECT_EQ(reference.status, c.status);
-    ASSERT_FALSE(small.diagnostics.empty());
-    EXPECT_EQ(small.diagnostics.back().issue, c.issue);
-    EXPECT_EQ(small.diagnostics.back().ring, c.ring);
+    for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
+      const auto result = triangulate(c.polygon, {.heuristic = h});
+      EXPECT_EQ(result.status, Status::not_simple);
+      ASSERT_EQ(result.diagnostics.size(), 1u);
+      EXPECT_EQ(result.diagnostics.back().issue, c.issue);
+      EXPECT_EQ(result.diagnostics.back().ring, c.ring);
+    }
   }
   // Four triangular holes in a column, each leftmost vertex in sight of the outer ring's left
   // corner (0, 0): their bridges all end there, so that position repeats five times.

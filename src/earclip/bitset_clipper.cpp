@@ -1,0 +1,239 @@
+#include "bitset_clipper.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <limits>
+
+#include "core/ear_test.hpp"
+
+namespace pear::detail {
+namespace {
+
+/// Node v's bit in word w of a NodeSet, 0 when v lies in another word.
+std::uint64_t bit_in_word(std::uint32_t v, std::uint32_t w) {
+  return v / 64 == w ? std::uint64_t{1} << (v % 64) : 0;
+}
+
+/// The bit of node v in its word when `on`, else 0, without a branch: whether a corner is
+/// convex is as good as random to the branch predictor.
+std::uint64_t bit_if(std::uint32_t v, bool on) {
+  return (std::uint64_t{1} << (v % 64)) & (std::uint64_t{0} - on);
+}
+
+}  // namespace
+
+void BitsetClipper::Slabs::build(std::span<const Point> points, double Point::*axis,
+                                 std::uint32_t words) {
+  double low = points[0].*axis, high = low;
+  for (const Point& p : points) low = std::min(low, p.*axis), high = std::max(high, p.*axis);
+  origin = low;
+  scale = high > low ? count / (high - low) : 0;
+  for (NodeSet& set : upto) std::fill_n(set.words.begin(), words, 0);
+  for (std::uint32_t i = 0; i < points.size(); ++i) upto[slab(points[i].*axis)].add(i);
+  for (std::uint32_t w = 0; w < words; ++w) {
+    from[count - 1].words[w] = upto[count - 1].words[w];
+    for (std::uint32_t s = count - 1; s-- > 0;)
+      from[s].words[w] = upto[s].words[w] | from[s + 1].words[w];
+    for (std::uint32_t s = 1; s < count; ++s) upto[s].words[w] |= upto[s - 1].words[w];
+  }
+}
+
+/// One pass along the cycle: sides, and each corner's turn and key; the positions as columns
+/// (one word) or slabs (more).
+void BitsetClipper::load(std::uint32_t entry, const std::vector<std::uint8_t>* shared) {
+  const Boundary& b = *b_;
+  const std::uint32_t n = b.size();
+  words_ = (n + 63) / 64;
+  stale_words_ = ~0u;
+  reflex_.words.fill(0);
+  convex_.words.fill(0);
+  shared_.words.fill(0);
+  remaining_ = 0;
+  std::uint32_t v = entry;
+  double side_before = squared_distance(b.pos[b.prev[v]], b.pos[v]);
+  do {
+    const std::uint32_t p = b.prev[v], after = b.next[v];
+    const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[after];
+    const double side = squared_distance(t, c), turn = orient2d(a, t, c);
+    side_[v] = side;
+    convex_.words[v / 64] |= bit_if(v, turn > 0);
+    reflex_.words[v / 64] |= bit_if(v, turn < 0);
+    if (shared) shared_.words[v / 64] |= bit_if(v, (*shared)[v] != 0);
+    if (keyed_) key_[v] = top_key(a, c, side_before, side, turn);
+    side_before = side;
+    ++remaining_;
+    v = after;
+  } while (v != entry && remaining_ <= n);
+  candidates_ = convex_;
+  slabbed_ = words_ > 1;
+  if (!slabbed_) {
+    for (std::uint32_t i = 0; i < n; ++i) xs_column_[i] = b.pos[i].x, ys_column_[i] = b.pos[i].y;
+  } else {
+    xs_.build(b.pos, &Point::x, words_);
+    ys_.build(b.pos, &Point::y, words_);
+  }
+  anchor_ = entry;
+}
+
+/// v's angle is new (it shrank when a neighbour was clipped): convex, reflex or collinear, and
+/// if convex a candidate again with its new key.
+inline void BitsetClipper::refresh(std::uint32_t v) {
+  const Boundary& b = *b_;
+  const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
+  const double turn = orient2d(a, t, c);
+  const std::uint64_t bit = std::uint64_t{1} << (v % 64);
+  const std::uint64_t convex = bit_if(v, turn > 0), reflex = bit_if(v, turn < 0);
+  const std::uint32_t w = v / 64;
+  reflex_.words[w] = (reflex_.words[w] & ~bit) | reflex;
+  convex_.words[w] = (convex_.words[w] & ~bit) | convex;
+  candidates_.words[w] = (candidates_.words[w] & ~bit) | convex;
+  stale_words_ |= 1u << w;
+  if (keyed_) key_[v] = top_key(a, c, side_[b.prev[v]], side_[v], turn);
+}
+
+/// ear_test.hpp's is_ear for a convex node, with the nodes that may block from bit sets: the
+/// strictly reflex ones and those at a repeated position, near the ear's box.
+bool BitsetClipper::is_ear(std::uint32_t v) const {
+  const Boundary& b = *b_;
+  const std::uint32_t p = b.prev[v], n = b.next[v];
+  if (!diagonal_clear_at_ends(b, p, n)) return false;
+  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
+  const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
+  const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
+  const Point* pos = b.pos.data();
+  // The ear's own corners cannot block it. Each node left is tested for the box first: most
+  // lie outside.
+  const auto blocked = [&](std::uint64_t near, std::uint32_t w) {
+    near &= (reflex_.words[w] | shared_.words[w]) &
+            ~(bit_in_word(p, w) | bit_in_word(v, w) | bit_in_word(n, w));
+    for (std::uint64_t set = near; set != 0; set &= set - 1) {
+      const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+      const Point& x = pos[q];
+      if (!((x.x >= x0) & (x.x <= x1) & (x.y >= y0) & (x.y <= y1))) continue;
+      if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, x)) return true;
+    }
+    return false;
+  };
+  // One word: the nodes in the box, found a few at a time without a branch, then only those.
+  if (!slabbed_)
+    return !blocked(
+        points_in_box_(xs_column_.data(), ys_column_.data(), b.size(), {x0, y0, x1, y1}), 0);
+  const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
+  const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    if (blocked(xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
+                    ys_.from[sy0].words[w],
+                w))
+      return false;
+  }
+  return true;
+}
+
+void BitsetClipper::clip_ear(std::uint32_t v, TriangleList& out) {
+  Boundary& b = *b_;
+  const std::uint32_t p = b.prev[v], n = b.next[v];
+  out.push_back({b.vertex[p], b.vertex[v], b.vertex[n]});
+  b.link(p, n);
+  if (keyed_) side_[p] = squared_distance(b.pos[p], b.pos[n]);
+  convex_.erase(v);
+  shared_.erase(v);  // off the cycle: it blocks nothing now
+  drop_candidate(v);
+  anchor_ = n;
+  --remaining_;
+  refresh(p);
+  refresh(n);
+}
+
+void BitsetClipper::drop_candidate(std::uint32_t v) {
+  candidates_.erase(v);
+  stale_words_ |= 1u << (v / 64);
+}
+
+/// The candidate of word w with the smallest key, the lowest node among equals; UINT32_MAX for
+/// none.
+std::uint32_t BitsetClipper::best_in_word(std::uint32_t w) const {
+  std::uint64_t set = candidates_.words[w];
+  if (set == 0) return UINT32_MAX;
+  std::uint32_t best = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+  std::int64_t best_key = key_[best];
+  for (set &= set - 1; set != 0; set &= set - 1) {
+    const std::uint32_t v = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
+    // Selects, not branches: which key is smaller is a coin toss for the predictor.
+    const bool better = key_[v] < best_key;
+    best = better ? v : best;
+    best_key = better ? key_[v] : best_key;
+  }
+  return best;
+}
+
+/// The candidate with the smallest key, the lowest node among equals; UINT32_MAX for none.
+std::uint32_t BitsetClipper::best_candidate() {
+  if (words_ == 1) return best_in_word(0);
+  std::uint32_t best = UINT32_MAX;
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    if ((stale_words_ >> w) & 1) word_best_[w] = best_in_word(w);
+    const std::uint32_t v = word_best_[w];
+    if (v != UINT32_MAX && (best == UINT32_MAX || key_[v] < key_[best])) best = v;
+  }
+  stale_words_ = 0;
+  return best;
+}
+
+/// `top`: the candidate with the smallest key that is an ear. A node found blocked waits until
+/// its angle changes; when none is left, one pass over every convex node (a blocker may have
+/// left) before giving up.
+bool BitsetClipper::clip_by_key(TriangleList& out) {
+  bool rescanned = false;
+  while (remaining_ > 3) {
+    const std::uint32_t best = best_candidate();
+    if (best == UINT32_MAX) {
+      if (rescanned) return false;
+      rescanned = true;
+      candidates_ = convex_;
+      stale_words_ = ~0u;
+      continue;
+    }
+    if (!is_ear(best)) {
+      drop_candidate(best);
+      continue;
+    }
+    rescanned = false;
+    clip_ear(best, out);
+  }
+  return finish(out);
+}
+
+/// `fast`: walk the cycle and clip each ear met; a whole lap without a clip means no ear.
+bool BitsetClipper::clip_by_walk(TriangleList& out) {
+  std::uint32_t v = anchor_, since_clip = 0;
+  while (remaining_ > 3) {
+    if (convex_.contains(v) && is_ear(v)) {
+      const std::uint32_t n = b_->next[v];
+      clip_ear(v, out);
+      v = n;
+      since_clip = 0;
+    } else {
+      if (++since_clip > remaining_) return false;
+      v = b_->next[v];
+    }
+  }
+  return finish(out);
+}
+
+bool BitsetClipper::finish(TriangleList& out) {
+  if (!convex_.contains(anchor_)) return false;
+  const Boundary& b = *b_;
+  out.push_back({b.vertex[b.prev[anchor_]], b.vertex[anchor_], b.vertex[b.next[anchor_]]});
+  return true;
+}
+
+bool BitsetClipper::clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                         TriangleList& out, const std::vector<std::uint8_t>* shared) {
+  b_ = &b;
+  keyed_ = heuristic == EarHeuristic::top;
+  load(entry, shared);
+  if (remaining_ < 3 || remaining_ > b.size()) return false;
+  return keyed_ ? clip_by_key(out) : clip_by_walk(out);
+}
+
+}  // namespace pear::detail
