@@ -64,6 +64,15 @@ struct PolygonView {
   std::span<const std::uint32_t> ring_offsets;
 };
 
+/// One polygon as interleaved coordinates: point i is (xy[2i], xy[2i+1]), the layout of a
+/// numpy (N, 2) float64 array and of GeoArrow's interleaved coordinates; ring r is points
+/// [ring_offsets[r], ring_offsets[r+1]), as in PolygonView. Read where it is, never copied into
+/// points first. An odd xy.size() is Status::invalid_input (Issue::invalid_offsets).
+struct CoordinateView {
+  std::span<const double> xy;
+  std::span<const std::uint32_t> ring_offsets;
+};
+
 namespace detail {
 class Engine;
 }  // namespace detail
@@ -104,11 +113,32 @@ class PEAR_API Triangulator {
   template <class Index = std::uint32_t>
   void triangulate_into(const PolygonView& polygon, const Options& options,
                         Triangulation<Index>& result) {
+    into(polygon, polygon.points.size(), options, result);
+  }
+
+  /// The same for a polygon as interleaved coordinates (numpy's (N, 2), GeoArrow's layout).
+  template <class Index = std::uint32_t>
+  void triangulate_into(const CoordinateView& polygon, const Options& options,
+                        Triangulation<Index>& result) {
+    into(polygon, polygon.xy.size() / 2, options, result);
+  }
+
+  /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
+  template <ring_range Rings>
+  EarStatistics ear_statistics(const Rings& rings) {
+    detail::FlatPolygon& flat = input_buffer();
+    if (!detail::flatten(rings, flat)) return {};
+    return run_statistics(PolygonView{flat.points, flat.ring_starts});
+  }
+
+ private:
+  template <class View, class Index>
+  void into(const View& polygon, std::size_t count, const Options& options,
+            Triangulation<Index>& result) {
     result.triangles.clear();
     result.diagnostics.clear();
     result.delaunay = {};
     result.status = Status::ok;
-    const std::size_t count = polygon.points.size();
     if (count > 0 && count - 1 > static_cast<std::size_t>(std::numeric_limits<Index>::max())) {
       result.status = Status::index_overflow;
       result.diagnostics.push_back({Issue::index_overflow, 0, count - 1});
@@ -125,18 +155,12 @@ class PEAR_API Triangulator {
     }
   }
 
-  /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
-  template <ring_range Rings>
-  EarStatistics ear_statistics(const Rings& rings) {
-    detail::FlatPolygon& flat = input_buffer();
-    if (!detail::flatten(rings, flat)) return {};
-    return run_statistics(PolygonView{flat.points, flat.ring_starts});
-  }
-
- private:
   detail::FlatPolygon& input_buffer();
   std::vector<std::array<std::uint32_t, 3>>& triangle_buffer();
   Status run(const PolygonView& polygon, const Options& options,
+             std::vector<std::array<std::uint32_t, 3>>& triangles,
+             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  Status run(const CoordinateView& polygon, const Options& options,
              std::vector<std::array<std::uint32_t, 3>>& triangles,
              std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   EarStatistics run_statistics(const PolygonView& polygon);

@@ -26,13 +26,14 @@ class BatchResult:
     """
 
     def __init__(self, coordinates, ring_offsets, polygon_offsets, geometry_offsets, arrays):
+        """arrays: the module's BatchArrays (pear._pear.triangulate_batch's result)."""
         self.coordinates = coordinates
         self.ring_offsets = ring_offsets
         self.polygon_offsets = polygon_offsets
         self.geometry_offsets = geometry_offsets
-        (self.triangles, self.triangle_offsets, self.status, self.diagnostic_offsets,
-         self.diagnostic_issue, self.diagnostic_ring, self.diagnostic_vertex,
-         self.delaunay_flips) = arrays
+        for name in ("triangles", "triangle_offsets", "status", "diagnostic_offsets",
+                     "diagnostic_issue", "diagnostic_ring", "diagnostic_vertex", "delaunay_flips"):
+            setattr(self, name, getattr(arrays, name))
 
     def __len__(self):
         """The number of polygons (a MultiPolygon counts its parts)."""
@@ -121,6 +122,19 @@ def _wkb_writer():
         return lambda geometry: geometry.wkb
 
 
+def _vectorised_wkb(geometries):
+    """Every geometry's WKB in one call where shapely has one (shapely 2's to_wkb, in C over
+    the array), else None: shapely 1.8 writes geometry by geometry."""
+    import shapely
+    to_wkb = getattr(shapely, "to_wkb", None)
+    if to_wkb is None:
+        return None
+    try:
+        return list(to_wkb(np.asarray(geometries, dtype=object)))
+    except (TypeError, ValueError):
+        return None  # something that is not a geometry: the module names it
+
+
 def _wkb_values(geometries):
     """WKB bytes (or None) for each of a sequence of shapely geometries, WKB values or None;
     what is none of these is passed on for the module to name."""
@@ -139,6 +153,9 @@ def _wkb_values(geometries):
     first = next((v for v in geometries if v is not None), None)
     if first is None or isinstance(first, (bytes, bytearray)):
         return geometries
+    vectorised = _vectorised_wkb(geometries)
+    if vectorised is not None:
+        return vectorised
     write = _wkb_writer()
     return [write(v) if hasattr(type(v), "wkb") else v for v in geometries]
 

@@ -17,11 +17,11 @@ namespace {
 /// releasing and taking the lock back costs more than another thread could gain.
 constexpr std::size_t release_gil_points = 256;
 
-/// A thread's engine, input and result buffers, kept between calls: a small polygon then costs
-/// no allocation but its result's array.
+/// A thread's Triangulator (pear's reuse object: its engine holds every buffer of a run) with
+/// the ring offsets and the result it fills, kept between calls: a small polygon then costs no
+/// allocation but its result's array. The coordinates are read where they are.
 struct Scratch {
   Triangulator triangulator;
-  std::vector<Point> points;
   std::vector<std::uint32_t> ring_offsets;
   Triangulation<> result;
 };
@@ -30,9 +30,8 @@ Scratch& thread_scratch() {
   return scratch;
 }
 
-Triangulation<>& run(Scratch& s, const Options& options) {
-  const PolygonView view{s.points, s.ring_offsets};
-  if (s.points.size() < release_gil_points) {
+Triangulation<>& run(Scratch& s, const CoordinateView& view, const Options& options) {
+  if (view.xy.size() < 2 * release_gil_points) {
     s.triangulator.triangulate_into(view, options, s.result);
   } else {
     py::gil_scoped_release release;
@@ -52,37 +51,35 @@ py::object finish(Triangulation<>& result, bool strict, const std::string& where
   return py::make_tuple(triangles, status_object(result.status));
 }
 
-/// A shapely Polygon or MultiPolygon: each part by itself, indices into the geometry's
-/// coordinates; the worst status of the parts (the first part that has it names the place).
+/// A shapely Polygon or MultiPolygon: its parts as one batch (pear's one run per part),
+/// indices into the geometry's coordinates; the worst status of the parts (the first part
+/// that has it names the place).
 py::object triangulate_geometry(py::handle geometry, const Options& options, bool strict) {
   const FlatPolygons flat = geometry_polygons(geometry);
   const std::size_t parts = flat.polygon_offsets.size() - 1;
   Scratch& s = thread_scratch();
   if (parts == 0) {  // an empty geometry: what empty coordinates give (empty_input)
-    s.points.clear();
     s.ring_offsets.assign(1, 0);
-    return finish(run(s, options), strict);
+    return finish(run(s, CoordinateView{{}, s.ring_offsets}, options), strict);
   }
+  const PolygonBatch batch{flat.coordinates, flat.ring_offsets, flat.polygon_offsets};
+  BatchTriangulation<> result;
+  if (flat.coordinates.size() < 2 * release_gil_points) {
+    result = triangulate_batch(batch, options);
+  } else {
+    py::gil_scoped_release release;
+    result = triangulate_batch(batch, options);
+  }
+  const auto worst = static_cast<std::size_t>(
+      std::max_element(result.status.begin(), result.status.end()) - result.status.begin());
   Triangulation<> all;
+  all.triangles = std::move(result.triangles);
+  all.status = result.status[worst];
   std::string where;
-  for (std::size_t p = 0; p < parts; ++p) {
-    const std::int64_t first_ring = flat.polygon_offsets[p], end_ring = flat.polygon_offsets[p + 1];
-    const std::int64_t first = flat.ring_offsets[first_ring], end = flat.ring_offsets[end_ring];
-    s.points.resize(static_cast<std::size_t>(end - first));
-    for (std::int64_t i = first; i < end; ++i)
-      s.points[i - first] = {flat.coordinates[2 * i], flat.coordinates[2 * i + 1]};
-    s.ring_offsets.clear();
-    for (std::int64_t r = first_ring; r <= end_ring; ++r)
-      s.ring_offsets.push_back(static_cast<std::uint32_t>(flat.ring_offsets[r] - first));
-    const Triangulation<>& part = run(s, options);
-    const auto base = static_cast<std::uint32_t>(first);
-    for (const auto& t : part.triangles)
-      all.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
-    if (part.status > all.status) {
-      all.status = part.status;
-      all.diagnostics = part.diagnostics;
-      where = parts > 1 ? "polygon " + std::to_string(p) + " of the MultiPolygon, " : "";
-    }
+  if (all.status != Status::ok) {
+    all.diagnostics.assign(result.diagnostics.begin() + result.diagnostic_offsets[worst],
+                           result.diagnostics.begin() + result.diagnostic_offsets[worst + 1]);
+    if (parts > 1) where = "polygon " + std::to_string(worst) + " of the MultiPolygon, ";
   }
   return finish(all, strict, where);
 }
@@ -100,10 +97,8 @@ py::object triangulate(py::handle coords, py::handle ring_ends, const Options& o
     throw py::value_error(std::to_string(n) + " points cannot be numbered by uint32 indices");
   Scratch& s = thread_scratch();
   ring_offsets_from(ring_ends, n, s.ring_offsets);
-  const double* xy = array.data();
-  s.points.resize(n);
-  for (std::size_t i = 0; i < n; ++i) s.points[i] = {xy[2 * i], xy[2 * i + 1]};
-  return finish(run(s, options), strict);
+  return finish(run(s, CoordinateView{std::span(array.data(), 2 * n), s.ring_offsets}, options),
+                strict);
 }
 
 /// triangulate's arguments, as pear.triangulate's signature names them.
@@ -177,10 +172,16 @@ PyMethodDef triangulate_definition = {
     "types raise TypeError, wrong shapes and values out of range ValueError. See\n"
     "docs/python.md."};
 
-/// Many polygons in the layout of shapely 2's to_ragged_array; returns the batch's arrays
-/// (pear._many.BatchResult wraps them).
-py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::handle polygon_offsets,
-                            const py::kwargs& keywords) {
+/// triangulate_batch's result as numpy arrays, by name (pear._many.BatchResult wraps it).
+struct BatchArrays {
+  py::object triangles, triangle_offsets, status, diagnostic_offsets, diagnostic_issue,
+      diagnostic_ring, diagnostic_vertex;
+  std::size_t delaunay_flips = 0;
+};
+
+/// Many polygons in the layout of shapely 2's to_ragged_array; returns the batch's arrays.
+BatchArrays triangulate_batch(py::handle coords, py::handle ring_offsets,
+                              py::handle polygon_offsets, const py::kwargs& keywords) {
   OptionArguments arguments;
   for (const auto& [name, value] : keywords)
     if (!option_argument(arguments, string_argument(name, "a keyword"), value))
@@ -190,8 +191,7 @@ py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::hand
   const Coordinates points = as_coordinates(coords);
   // The offsets decide which addresses are read: they are copied while the GIL is held, so
   // that another thread writing the caller's arrays cannot change one between its check and
-  // its use (issue 30). Coordinates are only values, read in place: each polygon's points are
-  // copied into a worker's buffer before they are triangulated.
+  // its use (issue 30). Coordinates are only values: read in place, the GIL released.
   const auto offsets = [](py::handle values, const char* name) {
     const auto array = as_offsets(values, name);
     return std::vector<std::int64_t>(array.data(), array.data() + array.shape(0));
@@ -215,12 +215,27 @@ py::tuple triangulate_batch(py::handle coords, py::handle ring_offsets, py::hand
       diagnostic_vertices.push_back(static_cast<std::int64_t>(d.vertex));
     }
   }
-  return py::make_tuple(triangles_array(std::move(result.triangles)),
-                        vector_array(std::move(result.triangle_offsets)),
-                        vector_array(std::move(status)),
-                        vector_array(std::move(result.diagnostic_offsets)),
-                        vector_array(std::move(issues)), vector_array(std::move(diagnostic_rings)),
-                        vector_array(std::move(diagnostic_vertices)), result.delaunay_flips);
+  return {triangles_array(std::move(result.triangles)),
+          vector_array(std::move(result.triangle_offsets)),
+          vector_array(std::move(status)),
+          vector_array(std::move(result.diagnostic_offsets)),
+          vector_array(std::move(issues)),
+          vector_array(std::move(diagnostic_rings)),
+          vector_array(std::move(diagnostic_vertices)),
+          result.delaunay_flips};
+}
+
+void bind_batch_arrays(py::module_& m) {
+  py::class_<BatchArrays>(m, "BatchArrays",
+                          "triangulate_batch's arrays by name; pear.BatchResult holds them.")
+      .def_readonly("triangles", &BatchArrays::triangles)
+      .def_readonly("triangle_offsets", &BatchArrays::triangle_offsets)
+      .def_readonly("status", &BatchArrays::status)
+      .def_readonly("diagnostic_offsets", &BatchArrays::diagnostic_offsets)
+      .def_readonly("diagnostic_issue", &BatchArrays::diagnostic_issue)
+      .def_readonly("diagnostic_ring", &BatchArrays::diagnostic_ring)
+      .def_readonly("diagnostic_vertex", &BatchArrays::diagnostic_vertex)
+      .def_readonly("delaunay_flips", &BatchArrays::delaunay_flips);
 }
 
 /// Triangles as a list of WKB Polygons (for GeoSeries.from_wkb).
@@ -283,6 +298,7 @@ PYBIND11_MODULE(_pear, m) {
   using namespace pear::python;
   m.doc() = "pear's C++ core; use the package pear (docs/python.md).";
   bind_diagnostic(m);
+  bind_batch_arrays(m);
   m.add_object("triangulate", py::reinterpret_steal<py::object>(PyCFunction_NewEx(
                                   &triangulate_definition, nullptr, py::str("pear._pear").ptr())));
   m.def("triangulate_batch", &triangulate_batch, py::arg("coords"), py::arg("ring_offsets"),

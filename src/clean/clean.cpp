@@ -17,11 +17,11 @@ bool coordinate_in_range(double c) {
 
 /// Names the first coordinate, from ring `from` on, that is not finite or out of range;
 /// returns whether there is one.
-bool name_coordinate_error(const PolygonView& in, std::size_t from,
+bool name_coordinate_error(const InputPolygon& in, std::size_t from,
                            std::vector<Diagnostic>& diagnostics) {
   for (std::size_t r = from; r + 1 < in.ring_offsets.size(); ++r) {
     for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {
-      const Point& p = in.points[i];
+      const Point p = in[i];
       const std::size_t vertex = i - in.ring_offsets[r];
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         diagnostics.push_back({Issue::non_finite_coordinate, r, vertex});
@@ -76,7 +76,7 @@ bool folds_back(const Point& a, const Point& b, const Point& c) {
 /// stays) nor a repeated closing point. Each point is written, and kept by a count, not a branch;
 /// returns whether every coordinate is in range, tested without a branch too (NaN and
 /// infinities fail the range test).
-bool append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& out) {
+bool append_deduplicated(const InputPolygon& in, std::size_t ring, CleanPolygon& out) {
   const std::size_t first = out.points.size();
   const std::uint32_t begin = in.ring_offsets[ring], end = in.ring_offsets[ring + 1];
   out.points.resize(first + (end - begin));
@@ -85,7 +85,7 @@ bool append_deduplicated(const PolygonView& in, std::size_t ring, CleanPolygon& 
   Point last = {std::numeric_limits<double>::quiet_NaN(), 0};  // equal to no point
   bool in_range = true;
   for (std::uint32_t i = begin; i < end; ++i) {
-    const Point p = in.points[i];
+    const Point p = in[i];
     in_range &= coordinate_in_range(p.x);
     in_range &= coordinate_in_range(p.y);
     out.points[kept] = p;
@@ -134,7 +134,7 @@ bool has_tip(const std::vector<Point>& pts, std::size_t first, std::size_t& lowe
 /// at again where it changed, until no tip is left. Rounds, not one tip after another: which tip
 /// goes first could decide whether a point between them stays, and the validator must find the
 /// same vertices. Each tip is named in a warning, by round, in ring order.
-void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, const PolygonView& in,
+void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, const InputPolygon& in,
                      std::vector<Diagnostic>& diagnostics) {
   const auto n = static_cast<std::uint32_t>(out.points.size() - first);
   const auto at = [&](std::uint32_t k) -> const Point& { return out.points[first + k]; };
@@ -177,13 +177,14 @@ void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, con
   out.original.resize(first + kept);
 }
 
-bool fewer_than_3_points(const PolygonView& in, std::size_t ring) {
-  const Point* seen[2] = {nullptr, nullptr};
+bool fewer_than_3_points(const InputPolygon& in, std::size_t ring) {
+  Point seen[2];
+  std::size_t distinct = 0;
   for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
-    const Point& p = in.points[i];
-    if ((seen[0] && *seen[0] == p) || (seen[1] && *seen[1] == p)) continue;
-    if (seen[1]) return false;
-    seen[seen[0] ? 1 : 0] = &p;
+    const Point p = in[i];
+    if ((distinct > 0 && seen[0] == p) || (distinct > 1 && seen[1] == p)) continue;
+    if (distinct == 2) return false;
+    seen[distinct++] = p;
   }
   return true;
 }
@@ -200,7 +201,7 @@ void drop_ring(CleanPolygon& out, std::size_t first) {
 
 }  // namespace
 
-Status clean_polygon(const PolygonView& in, CleanPolygon& out,
+Status clean_polygon(const InputPolygon& in, CleanPolygon& out,
                      std::vector<Diagnostic>& diagnostics) {
   out.clear();
   const std::size_t rings = in.ring_offsets.empty() ? 0 : in.ring_offsets.size() - 1;
@@ -211,7 +212,7 @@ Status clean_polygon(const PolygonView& in, CleanPolygon& out,
   for (std::size_t r = 0; r <= rings; ++r) {
     const std::uint32_t offset = in.ring_offsets[r];
     const bool in_order = r == 0 ? offset == 0 : in.ring_offsets[r - 1] <= offset;
-    if (!in_order || (r == rings && offset != in.points.size())) {
+    if (!in_order || (r == rings && offset != in.size())) {
       diagnostics.push_back({Issue::invalid_offsets, r, 0});
       return Status::invalid_input;
     }

@@ -10,7 +10,7 @@ namespace pear::detail {
 
 /// Checks the input and fills `out`. Returns Status::invalid_input (with an error diagnostic
 /// naming ring and vertex) when nothing can be triangulated; warnings are appended too.
-Status clean_polygon(const PolygonView& in, CleanPolygon& out,
+Status clean_polygon(const InputPolygon& in, CleanPolygon& out,
                      std::vector<Diagnostic>& diagnostics);
 
 /// `in` with every edge split at the vertices lying inside it (sorted along each edge, as

@@ -6,6 +6,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/tasks.hpp"
@@ -13,6 +14,27 @@
 #include "pear/pear.hpp"
 
 namespace pear::detail {
+
+/// The caller's polygon as the pipeline reads it: its points, or its interleaved coordinates
+/// (pear::CoordinateView), read where they are. Ring r is points [ring_offsets[r],
+/// ring_offsets[r + 1]).
+struct InputPolygon {
+  const Point* points = nullptr;  ///< or
+  const double* xy = nullptr;     ///< x0, y0, x1, y1, ...
+  std::size_t count = 0;
+  std::span<const std::uint32_t> ring_offsets;
+
+  InputPolygon(const PolygonView& view)  // NOLINT(google-explicit-constructor): a view of a view
+      : points(view.points.data()), count(view.points.size()), ring_offsets(view.ring_offsets) {}
+  InputPolygon(const CoordinateView& view)  // NOLINT(google-explicit-constructor)
+      : xy(view.xy.data()), count(view.xy.size() / 2), ring_offsets(view.ring_offsets) {}
+
+  std::size_t size() const { return count; }
+  /// Point i: one well-predicted branch, whichever the layout.
+  Point operator[](std::size_t i) const {
+    return xy != nullptr ? Point{xy[2 * i], xy[2 * i + 1]} : points[i];
+  }
+};
 
 /// Triangles as counterclockwise triples of the caller's vertex indices.
 using TriangleList = std::vector<std::array<std::uint32_t, 3>>;

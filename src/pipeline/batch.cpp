@@ -48,27 +48,22 @@ struct ChunkResult {
   std::size_t flips = 0;
 };
 
-/// What a worker reuses between the polygons of its chunk.
-struct Worker {
-  PooledEngine engine;
-  std::vector<Point> points;
-  std::vector<std::uint32_t> ring_offsets;
-  TriangleList triangles;
-  std::vector<Diagnostic> diagnostics;
-};
-
+/// Polygon `span` of the batch by the one run, its points read where they are (only its ring
+/// offsets are made relative); its triangles (batch indices) and diagnostics appended.
 Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const Options& options,
-                       Worker& w, ChunkResult& chunk) {
-  w.points.clear();
-  for (std::int64_t i = span.first_point; i < span.end_point; ++i)
-    w.points.push_back({batch.coordinates[2 * i], batch.coordinates[2 * i + 1]});
-  w.ring_offsets.clear();
+                       Engine& engine, ChunkResult& chunk) {
+  Engine::Buffers& w = engine.buffers();
+  w.input.ring_starts.clear();
   for (std::int64_t r = span.first_ring; r <= span.end_ring; ++r)
-    w.ring_offsets.push_back(static_cast<std::uint32_t>(batch.ring_offsets[r] - span.first_point));
+    w.input.ring_starts.push_back(
+        static_cast<std::uint32_t>(batch.ring_offsets[r] - span.first_point));
+  const std::span<const double> xy =
+      batch.coordinates.subspan(static_cast<std::size_t>(2 * span.first_point),
+                                static_cast<std::size_t>(2 * (span.end_point - span.first_point)));
   w.diagnostics.clear();
   DelaunayStatistics flips;
-  const Status status = w.engine->run(PolygonView{w.points, w.ring_offsets}, options, w.triangles,
-                                      w.diagnostics, flips);
+  const Status status = engine.run(CoordinateView{xy, w.input.ring_starts}, options, w.triangles,
+                                   w.diagnostics, flips);
   const auto base = static_cast<std::uint32_t>(span.first_point);
   for (const auto& t : w.triangles)
     chunk.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
@@ -135,7 +130,7 @@ BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
   // With a profile: one phase whose tasks are the polygons (they run in parallel).
   std::vector<double> seconds(options.profile ? polygons : 0);
   const auto run_chunk = [&](std::size_t c) {
-    Worker w;
+    PooledEngine engine;
     for (std::size_t p = bounds[c]; p < bounds[c + 1]; ++p) {
       const std::size_t triangles_before = parts[c].triangles.size();
       const std::size_t diagnostics_before = parts[c].diagnostics.size();
@@ -149,7 +144,7 @@ BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
         result.status[p] =
             bad->issue == Issue::index_overflow ? Status::index_overflow : Status::invalid_input;
       } else {
-        result.status[p] = triangulate_one(batch, span, per_polygon, w, parts[c]);
+        result.status[p] = triangulate_one(batch, span, per_polygon, *engine, parts[c]);
       }
       if (options.profile)
         seconds[p] =

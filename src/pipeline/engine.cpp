@@ -42,7 +42,14 @@ bool Engine::found_not_simple() const {
                      [](const Finding& f) { return Diagnostic{f.issue}.is_not_simple(); });
 }
 
-Status Engine::report(const PolygonView& input, std::vector<Diagnostic>& diagnostics) const {
+std::span<const Point> Engine::caller_points(const InputPolygon& input) {
+  if (input.points != nullptr) return {input.points, input.size()};
+  caller_points_.resize(input.size());
+  for (std::size_t i = 0; i < input.size(); ++i) caller_points_[i] = input[i];
+  return caller_points_;
+}
+
+Status Engine::report(const InputPolygon& input, std::vector<Diagnostic>& diagnostics) const {
   Status status = Status::ok;
   for (const Finding& f : findings_) {
     const auto ring_end =
@@ -219,7 +226,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   return complete;
 }
 
-Status Engine::run(const PolygonView& input, const Options& options, TriangleList& out,
+Status Engine::run(const InputPolygon& input, const Options& options, TriangleList& out,
                    std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   out.clear();
   findings_.clear();
@@ -248,11 +255,11 @@ Status Engine::run(const PolygonView& input, const Options& options, TriangleLis
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
   if (options.delaunay && status == Status::ok)
-    make_delaunay(input.points, clean_, out, ctx, delaunay);
+    make_delaunay(caller_points(input), clean_, out, ctx, delaunay);
   return status;
 }
 
-EarStatistics Engine::statistics(const PolygonView& input) {
+EarStatistics Engine::statistics(const InputPolygon& input) {
   std::vector<Diagnostic> ignored;
   if (clean_polygon(input, clean_, ignored) != Status::ok) return {};
   findings_.clear();

@@ -23,13 +23,19 @@ class Engine {
   /// Triangulates `input` into `out` (cleared first), appending to `diagnostics`. Parallel
   /// stages run where Workers::runner(options) says, looked up only when a stage needs
   /// threads: a sequential run, and every small polygon, never touches an executor.
-  Status run(const PolygonView& input, const Options& options, TriangleList& out,
+  Status run(const InputPolygon& input, const Options& options, TriangleList& out,
              std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
-  EarStatistics statistics(const PolygonView& input);
+  EarStatistics statistics(const InputPolygon& input);
 
-  /// Buffers a caller may fill and pass back as input (Triangulator's flattened rings).
-  FlatPolygon& input_buffer() { return input_; }
-  TriangleList& triangle_buffer() { return triangles_; }
+  /// Where a caller of run() keeps its input and results between runs (the Triangulator's
+  /// flattened rings and narrow-index triangles, a batch's per-polygon offsets and results):
+  /// every buffer a run needs lives in its engine, and goes back to the pool with it.
+  struct Buffers {
+    FlatPolygon input;
+    TriangleList triangles;
+    std::vector<Diagnostic> diagnostics;
+  };
+  Buffers& buffers() { return buffers_; }
   /// Vertices the buffers were last sized for: what keeping this engine costs.
   std::size_t footprint() const { return clean_.points.capacity() + boundary_.pos.capacity(); }
   Workers& workers() { return workers_; }
@@ -70,11 +76,13 @@ class Engine {
   }
   bool found_not_simple() const;
   /// The findings as diagnostics in the caller's numbering, and the status they make.
-  Status report(const PolygonView& input, std::vector<Diagnostic>& diagnostics) const;
+  Status report(const InputPolygon& input, std::vector<Diagnostic>& diagnostics) const;
+  /// The caller's points, for the CDT (which reads them by the caller's index): where they
+  /// are, or copied from interleaved coordinates.
+  std::span<const Point> caller_points(const InputPolygon& input);
 
   Workers workers_;  ///< a private executor for Options::threads, kept between runs
-  FlatPolygon input_;
-  TriangleList triangles_;
+  Buffers buffers_;
   CleanPolygon clean_;
   CleanPolygon split_;  ///< clean_ with its T-junctions split, swapped with it
   Boundary boundary_;
@@ -88,6 +96,7 @@ class Engine {
   EarClipper clipper_;
   std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
+  std::vector<Point> caller_points_;                        ///< caller_points' copy
 };
 
 }  // namespace pear::detail

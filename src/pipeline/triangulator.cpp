@@ -21,20 +21,42 @@ Triangulator& Triangulator::operator=(Triangulator&& other) noexcept {
 
 detail::FlatPolygon& Triangulator::input_buffer() {
   if (!engine_) engine_ = detail::acquire_engine();
-  return engine_->input_buffer();
+  return engine_->buffers().input;
 }
 
 std::vector<std::array<std::uint32_t, 3>>& Triangulator::triangle_buffer() {
   if (!engine_) engine_ = detail::acquire_engine();
-  return engine_->triangle_buffer();
+  return engine_->buffers().triangles;
 }
+
+namespace {
+
+/// The one run behind every Triangulator call: an engine from the pool, the profile reset.
+Status run_engine(std::unique_ptr<detail::Engine>& engine, const detail::InputPolygon& polygon,
+                  const Options& options, std::vector<std::array<std::uint32_t, 3>>& triangles,
+                  std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
+  if (!engine) engine = detail::acquire_engine();
+  if (options.profile) options.profile->phases.clear();
+  return engine->run(polygon, options, triangles, diagnostics, delaunay);
+}
+
+}  // namespace
 
 Status Triangulator::run(const PolygonView& polygon, const Options& options,
                          std::vector<std::array<std::uint32_t, 3>>& triangles,
                          std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
-  if (!engine_) engine_ = detail::acquire_engine();
-  if (options.profile) options.profile->phases.clear();
-  return engine_->run(polygon, options, triangles, diagnostics, delaunay);
+  return run_engine(engine_, polygon, options, triangles, diagnostics, delaunay);
+}
+
+Status Triangulator::run(const CoordinateView& polygon, const Options& options,
+                         std::vector<std::array<std::uint32_t, 3>>& triangles,
+                         std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
+  if (polygon.xy.size() % 2 != 0) {  // half a point at the end: no offset can end the rings
+    const std::size_t rings = polygon.ring_offsets.empty() ? 0 : polygon.ring_offsets.size() - 1;
+    diagnostics.push_back({Issue::invalid_offsets, rings, 0});
+    return Status::invalid_input;
+  }
+  return run_engine(engine_, polygon, options, triangles, diagnostics, delaunay);
 }
 
 EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {

@@ -320,6 +320,37 @@ TEST(EngineInput, TriangulateIntoReplacesTheResult) {
   EXPECT_TRUE(validate(Polygon{square}, result.triangles).valid);
 }
 
+/// Interleaved coordinates (numpy's (N, 2), GeoArrow's layout) give what the same points
+/// give, for both heuristics and the CDT; half a point at the end is refused.
+TEST(EngineInput, CoordinateViewGivesWhatPolygonViewGives) {
+  const Polygon p = {square(0, 0, 10), reversed(square(2, 2, 3)), reversed(square(6, 6, 2))};
+  std::vector<Point> points;
+  std::vector<std::uint32_t> offsets{0};
+  for (const Ring& ring : p) {
+    points.insert(points.end(), ring.begin(), ring.end());
+    offsets.push_back(static_cast<std::uint32_t>(points.size()));
+  }
+  std::vector<double> xy;
+  for (const Point& q : points) xy.insert(xy.end(), {q.x, q.y});
+  Triangulator triangulator;
+  for (const Options& options :
+       {Options{}, Options{.heuristic = EarHeuristic::fast}, Options{.delaunay = true}}) {
+    Triangulation<> from_points, from_xy;
+    triangulator.triangulate_into(PolygonView{points, offsets}, options, from_points);
+    triangulator.triangulate_into(CoordinateView{xy, offsets}, options, from_xy);
+    ASSERT_EQ(from_points.status, Status::ok);
+    EXPECT_EQ(from_xy.status, Status::ok);
+    EXPECT_EQ(from_xy.triangles, from_points.triangles);
+    EXPECT_TRUE(validate(p, from_xy.triangles).valid);
+  }
+  xy.push_back(1.0);  // an x without its y
+  Triangulation<> odd;
+  triangulator.triangulate_into(CoordinateView{xy, offsets}, {}, odd);
+  EXPECT_EQ(odd.status, Status::invalid_input);
+  ASSERT_EQ(odd.diagnostics.size(), 1u);
+  EXPECT_EQ(odd.diagnostics[0].issue, Issue::invalid_offsets);
+}
+
 TEST(EngineStatistics, ConvexPolygonIsAllEars) {
   Ring hexagon;
   for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)});
