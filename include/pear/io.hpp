@@ -1,5 +1,5 @@
-// pear: reading polygons from GeoJSON, WKT and Triangle's .poly; writing triangulations as OBJ,
-// GeoJSON, Triangle's .node/.ele and SVG.
+// pear: reading polygons from GeoJSON, WKT (and PostGIS' EWKT) and Triangle's .poly; writing
+// triangulations as OBJ, GeoJSON, Triangle's .node/.ele and SVG.
 //
 //   std::vector<pear::Polygon> polygons = pear::io::read_file("lake.geojson");  // throws
 //   ParseError for (const auto& polygon : polygons) { auto result = pear::triangulate(polygon); ...
@@ -8,6 +8,7 @@
 // Readers are strict: a malformed, truncated or binary input, a wrong type, a number that is not a
 // finite double (NaN, 1e400) or a ring with fewer than 3 points throws ParseError naming the file,
 // line and column, what was expected and what was found. A read never returns part of a file.
+// Text readers skip a UTF-8 byte order mark at the start.
 // Readers drop a ring's closing point when it repeats the first point, so vertex i of a polygon is
 // the i-th distinct input point (ring after ring), as pear::triangulate numbers them.
 //
@@ -71,6 +72,7 @@ PEAR_API std::vector<Polygon> read_geojson(std::string_view text,
 
 /// One or more WKT geometries separated by white space: POLYGON, MULTIPOLYGON (with optional
 /// Z, M or ZM, extra ordinates ignored) or their EMPTY forms. Keywords are case-insensitive.
+/// A geometry may carry PostGIS' EWKT prefix `SRID=4326;`, which is read and ignored.
 PEAR_API std::vector<Polygon> read_wkt(std::string_view text, std::string_view name = "<wkt>",
                                        const ReadOptions& options = {});
 

@@ -22,6 +22,7 @@ Format guess_format(std::string_view name, std::string_view text) {
     if (ends_with_ignoring_case(name, ext)) return Format::geojson;
   if (ends_with_ignoring_case(name, ".wkt")) return Format::wkt;
   if (ends_with_ignoring_case(name, ".poly")) return Format::poly;
+  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte order mark
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return Format::geojson;
   const unsigned char c = static_cast<unsigned char>(text[first]);

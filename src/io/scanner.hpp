@@ -17,9 +17,11 @@ enum class NumberSyntax { json, loose };
 
 class Scanner {
  public:
-  Scanner(std::string_view text, std::string_view name) : text_(text), name_(name) {}
+  /// Starts after a UTF-8 byte order mark, which some editors write at the start of a text.
+  Scanner(std::string_view text, std::string_view name)
+      : pos(text.starts_with("\xEF\xBB\xBF") ? 3 : 0), text_(text), name_(name) {}
 
-  std::size_t pos = 0;
+  std::size_t pos;
 
   bool at_end() const { return pos >= text_.size(); }
   char peek() const { return pos < text_.size() ? text_[pos] : '\0'; }

@@ -1,4 +1,5 @@
-// Well-known text: POLYGON and MULTIPOLYGON (OGC Simple Features), one or more per text.
+// Well-known text: POLYGON and MULTIPOLYGON (OGC Simple Features), one or more per text, each
+// with an optional EWKT SRID prefix.
 #include <cctype>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ class WktReader {
 
  private:
   void geometry() {
+    srid_prefix();
     const std::size_t at = s_.pos;
     const std::string kind = upper(word());
     if (kind != "POLYGON" && kind != "MULTIPOLYGON")
@@ -46,6 +48,20 @@ class WktReader {
     } else if (!empty()) {
       list([&] { polygon_text(); });
     }
+  }
+
+  // PostGIS' EWKT: an optional "SRID=4326;" before the geometry. Read and ignored: pear
+  // triangulates in the plane of the coordinates, whatever their reference system.
+  void srid_prefix() {
+    const std::size_t at = s_.pos;
+    if (upper(word()) != "SRID") {
+      s_.pos = at;
+      return;
+    }
+    s_.expect('=', "'=' after SRID");
+    s_.count("SRID");
+    s_.expect(';', "';' after the SRID");
+    s_.skip_space();
   }
 
   // Optional Z, M or ZM: how many ordinates each point then has.

@@ -162,6 +162,17 @@ TEST(WktErrors, SmallRing) {
 TEST(WktErrors, WrongOrdinateCount) {
   wkt_error("POLYGON Z ((0 0, 1 0, 1 1, 0 0))", 1, 16, "expected 3 ordinates per point");
 }
+TEST(WktErrors, MalformedSridPrefix) {
+  wkt_error("SRID=;POLYGON EMPTY", 1, 6, "expected an integer SRID but found ';'");
+  wkt_error("SRID=-1;POLYGON EMPTY", 1, 6, "expected a non-negative SRID but found '-1'");
+  wkt_error("srid:4326;POLYGON EMPTY", 1, 5, "expected '=' after SRID but found ':'");
+  wkt_error("SRID=4326 POLYGON EMPTY", 1, 10, "expected ';' after the SRID but found white space");
+  wkt_error("POLYGON EMPTY\nSRID=4326;", 2, 11, "expected POLYGON or MULTIPOLYGON but found end");
+}
+TEST(WktErrors, ColumnsCountTheByteOrderMark) {
+  // The mark is skipped but stays in the text: offsets and columns are those of the file.
+  wkt_error("\xEF\xBB\xBFPOLYGON ((0 0, 1 0))", 1, 13, "at least 3 points");
+}
 
 void poly_error(const std::string& text, std::size_t line, std::size_t column,
                 const std::string& phrase) {

@@ -153,6 +153,28 @@ TEST(Formats, WktAndPolyReadLikeGeoJson) {
   expect_same_polygons(poly, json);
 }
 
+TEST(Formats, EwktSridPrefixesAreSkipped) {
+  const std::vector<Polygon> expected = {{{{0, 0}, {4, 0}, {4, 4}}}, {{{5, 5}, {6, 5}, {6, 6}}}};
+  expect_same_polygons(io::read_wkt("SRID=4326;POLYGON ((0 0, 4 0, 4 4, 0 0))\n"
+                                    "srid=0; MULTIPOLYGON Z (((5 5 1, 6 5 1, 6 6 1, 5 5 1)))"),
+                       expected);
+  const std::string ewkt = "SRID=3857;POLYGON((0 0,4 0,4 4,0 0))";
+  EXPECT_EQ(io::guess_format("-", ewkt), io::Format::wkt);
+  expect_same_polygons(io::read_text(ewkt, io::guess_format("-", ewkt), "-"), {expected[0]});
+}
+
+TEST(Formats, TextsMayStartWithAByteOrderMark) {
+  const std::string bom = "\xEF\xBB\xBF";
+  const Polygon triangle = {{{0, 0}, {4, 0}, {4, 4}}};
+  for (const std::string text :
+       {R"({"type":"Polygon","coordinates":[[[0,0],[4,0],[4,4]]]})", "POLYGON ((0 0, 4 0, 4 4))",
+        "3 2 0 0\n1 0 0\n2 4 0\n3 4 4\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n"}) {
+    SCOPED_TRACE(text);
+    const std::string marked = bom + text;
+    expect_same_polygons(io::read_text(marked, io::guess_format("-", marked), "-"), {triangle});
+  }
+}
+
 // Valid real polygons (Natural Earth countries and font glyphs, many holes) come back bit
 // identical through every polygon format.
 TEST(RoundTrip, BundledCorpusThroughEveryFormat) {
