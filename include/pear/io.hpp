@@ -1,5 +1,5 @@
-// pear: reading polygons from GeoJSON, WKT (and PostGIS' EWKT) and Triangle's .poly; writing
-// triangulations as OBJ, GeoJSON, Triangle's .node/.ele and SVG.
+// pear: reading polygons from GeoJSON, WKT (and PostGIS' EWKT), WKB (and EWKB, binary or hex) and
+// Triangle's .poly; writing triangulations as OBJ, GeoJSON, Triangle's .node/.ele and SVG.
 //
 //   std::vector<pear::Polygon> polygons = pear::io::read_file("lake.geojson");  // throws
 //   ParseError for (const auto& polygon : polygons) { auto result = pear::triangulate(polygon); ...
@@ -7,8 +7,8 @@
 //
 // Readers are strict: a malformed, truncated or binary input, a wrong type, a number that is not a
 // finite double (NaN, 1e400) or a ring with fewer than 3 points throws ParseError naming the file,
-// line and column, what was expected and what was found. A read never returns part of a file.
-// Text readers skip a UTF-8 byte order mark at the start.
+// line and column (for binary WKB: the byte), what was expected and what was found. A read never
+// returns part of a file. Text readers skip a UTF-8 byte order mark at the start.
 // Readers drop a ring's closing point when it repeats the first point, so vertex i of a polygon is
 // the i-th distinct input point (ring after ring), as pear::triangulate numbers them.
 //
@@ -34,6 +34,8 @@ namespace pear::io {
 
 /// Thrown by every reader. what() is "FILE:LINE:COL: expected X but found Y"; line and column
 /// count from 1, the column in bytes. offset is the byte offset of the problem in the text.
+/// Binary WKB has no lines: line and column are 0, what() is "FILE: byte N: ..." and detail()
+/// starts with "byte N: ", N being offset.
 class PEAR_API ParseError : public std::runtime_error {
  public:
   ParseError(std::string file, std::size_t line, std::size_t column, std::size_t offset,
@@ -53,7 +55,8 @@ class PEAR_API ParseError : public std::runtime_error {
   std::string detail_;
 };
 
-enum class Format : std::uint8_t { geojson, wkt, poly };
+/// wkb: one binary WKB value; hex_wkb: WKB values as hex text (read_hex_wkb).
+enum class Format : std::uint8_t { geojson, wkt, poly, wkb, hex_wkb };
 
 struct ReadOptions {
   /// Accept rings with fewer than 3 points (earcut's fixtures have such "Steiner" holes) and pass
@@ -84,9 +87,55 @@ PEAR_API std::vector<Polygon> read_wkt(std::string_view text, std::string_view n
 PEAR_API std::vector<Polygon> read_poly(std::string_view text, std::string_view name = "<poly>",
                                         const ReadOptions& options = {});
 
-/// Reads by format. read_file picks the format from the extension (.json, .geojson, .wkt,
-/// .poly) or, failing that, from the first non-blank character. Throws ParseError, also for a
-/// file that cannot be opened (line 0).
+// WKB (well-known binary): what shapely's `.wkb`, geopandas' to_wkb(), GDAL and PostGIS
+// (ST_AsBinary, ST_AsEWKB) write. A value is a Polygon, a MultiPolygon (its parts may differ in
+// byte order) or an empty GeometryCollection (GEOS' empty polygon): ISO WKB or PostGIS' EWKB,
+// either byte order, with Z, M or ZM ordinates (dropped) and an EWKB SRID (ignored). Other
+// types, a value cut short or followed by more bytes, and counts that the bytes cannot hold are
+// a ParseError naming the byte, counted from the value's first byte.
+
+/// One WKB value, its bytes exactly (a .wkb file holds one value). Each non-empty Polygon is one
+/// entry, rings as the text readers give them (closing point dropped, at least 3 points unless
+/// ReadOptions::keep_small_rings); a NaN or infinite coordinate is a ParseError.
+PEAR_API std::vector<Polygon> read_wkb(std::span<const std::byte> wkb,
+                                       std::string_view name = "<wkb>",
+                                       const ReadOptions& options = {});
+
+/// WKB values in hex (upper or lower case), as PostGIS prints geometries and `ST_AsHexEWKB`
+/// writes them: one or more values separated by white space, usually one per line. Errors
+/// name the line and column of the byte's hex digits, and "value K, byte N" (K from 1).
+PEAR_API std::vector<Polygon> read_hex_wkb(std::string_view text,
+                                           std::string_view name = "<hex wkb>",
+                                           const ReadOptions& options = {});
+
+/// Polygons of many geometries as flat arrays: the layout of pear::PolygonBatch (pass
+/// coordinates, ring_offsets and polygon_offsets) and of shapely 2's to_ragged_array, one level
+/// more. Point i is (coordinates[2i], coordinates[2i+1]); ring r is points [ring_offsets[r],
+/// ring_offsets[r+1]); polygon p is rings [polygon_offsets[p], polygon_offsets[p+1]); geometry
+/// g is polygons [geometry_offsets[g], geometry_offsets[g+1]). As constructed: no geometries,
+/// each offset array holding its leading 0.
+struct PolygonArrays {
+  std::vector<double> coordinates;
+  std::vector<std::int64_t> ring_offsets{0};
+  std::vector<std::int64_t> polygon_offsets{0};
+  std::vector<std::int64_t> geometry_offsets{0};
+};
+
+/// Appends one WKB value to `out` as its next geometry, for many geometries without a Polygon
+/// object each (pear.triangulate_many over shapely geometries). Rings are kept as the value
+/// has them, closing point included, so point i of the geometry is the i-th coordinate it
+/// lists; coordinates are not checked (pear::triangulate_batch reports NaN or a short ring).
+/// One polygon per non-empty Polygon or MultiPolygon part; an empty span is a missing
+/// geometry, with no polygons. On a ParseError `out` is as it was before the call.
+PEAR_API void read_wkb(std::span<const std::byte> wkb, PolygonArrays& out,
+                       std::string_view name = "<wkb>");
+
+/// Reads by format; for Format::wkb `text` holds the value's bytes. read_file picks the format
+/// from the extension (.json, .geojson, .wkt, .poly, .wkb; .hexwkb or .wkb.hex for hex WKB) or,
+/// failing that, from the content: a first byte 0 or 1 is binary WKB (a WKB byte order, which
+/// no text starts with), a first word of 18 or more hex digits starting 00 or 01 is hex WKB,
+/// else the first non-blank character decides. Throws ParseError, also for a file that cannot
+/// be opened (line 0).
 PEAR_API std::vector<Polygon> read_text(std::string_view text, Format format, std::string_view name,
                                         const ReadOptions& options = {});
 PEAR_API std::vector<Polygon> read_file(const std::filesystem::path& path,

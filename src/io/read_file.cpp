@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
@@ -15,6 +16,17 @@ bool ends_with_ignoring_case(std::string_view name, std::string_view suffix) {
     if (std::tolower(static_cast<unsigned char>(tail[i])) != suffix[i]) return false;
   return true;
 }
+
+/// Whether the text's first word could be hex WKB: 18 or more hex digits, a byte order first.
+bool starts_hex_wkb(std::string_view text) {
+  const std::size_t end = std::min(text.find_first_of(" \t\r\n"), text.size());
+  constexpr std::size_t shortest = 18;  // byte order, type and a count: 9 bytes
+  if (end < shortest || end % 2 != 0 || text[0] != '0' || (text[1] != '0' && text[1] != '1'))
+    return false;
+  for (std::size_t i = 0; i < end; ++i)
+    if (!std::isxdigit(static_cast<unsigned char>(text[i]))) return false;
+  return true;
+}
 }  // namespace
 
 Format guess_format(std::string_view name, std::string_view text) {
@@ -22,9 +34,15 @@ Format guess_format(std::string_view name, std::string_view text) {
     if (ends_with_ignoring_case(name, ext)) return Format::geojson;
   if (ends_with_ignoring_case(name, ".wkt")) return Format::wkt;
   if (ends_with_ignoring_case(name, ".poly")) return Format::poly;
+  if (ends_with_ignoring_case(name, ".wkb")) return Format::wkb;
+  for (const std::string_view ext : {".hexwkb", ".wkb.hex"})
+    if (ends_with_ignoring_case(name, ext)) return Format::hex_wkb;
+  // A WKB value starts with its byte order, 0 or 1: no text format starts with such a byte.
+  if (!text.empty() && (text[0] == '\0' || text[0] == '\1')) return Format::wkb;
   if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);  // a UTF-8 byte order mark
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return Format::geojson;
+  if (starts_hex_wkb(text.substr(first))) return Format::hex_wkb;
   const unsigned char c = static_cast<unsigned char>(text[first]);
   if (std::isalpha(c)) return Format::wkt;
   if (std::isdigit(c) || c == '#' || c == '+') return Format::poly;
@@ -38,6 +56,10 @@ std::vector<Polygon> read_text(std::string_view text, Format format, std::string
       return read_wkt(text, name, options);
     case Format::poly:
       return read_poly(text, name, options);
+    case Format::wkb:
+      return read_wkb(std::as_bytes(std::span(text)), name, options);
+    case Format::hex_wkb:
+      return read_hex_wkb(text, name, options);
     case Format::geojson:
       break;
   }

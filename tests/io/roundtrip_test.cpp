@@ -12,6 +12,7 @@
 #include "corpus.hpp"
 #include "missing_data.hpp"
 #include "pear/io.hpp"
+#include "same_polygons.hpp"
 
 namespace {
 
@@ -20,23 +21,8 @@ using pear::Polygon;
 using pear::Ring;
 namespace io = pear::io;
 
-bool same_bits(double a, double b) {
-  return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b);
-}
-
-void expect_same_polygons(const std::vector<Polygon>& got, const std::vector<Polygon>& want) {
-  ASSERT_EQ(got.size(), want.size());
-  for (std::size_t p = 0; p < want.size(); ++p) {
-    ASSERT_EQ(got[p].size(), want[p].size()) << "polygon " << p;
-    for (std::size_t r = 0; r < want[p].size(); ++r) {
-      ASSERT_EQ(got[p][r].size(), want[p][r].size()) << "polygon " << p << " ring " << r;
-      for (std::size_t i = 0; i < want[p][r].size(); ++i) {
-        EXPECT_TRUE(same_bits(got[p][r][i].x, want[p][r][i].x)) << got[p][r][i].x;
-        EXPECT_TRUE(same_bits(got[p][r][i].y, want[p][r][i].y)) << got[p][r][i].y;
-      }
-    }
-  }
-}
+using pear::testing::expect_same_polygons;
+using pear::testing::same_bits;
 
 // A finite double from random bits: every exponent and sign, subnormals and -0 included.
 double random_double(std::mt19937_64& rng) {
