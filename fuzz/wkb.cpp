@@ -1,8 +1,8 @@
-// Fuzz target "wkb" (issue 30): the Python package's WKB reader (python/src/wkb.hpp, plain
-// C++) on arbitrary bytes: truncated values, counts the bytes cannot hold, wrong byte orders
-// and types. Values are read one after the other into one FlatPolygons, as
-// pear.triangulate_many reads a sequence, until the first WkbError. An error must name the
-// value and a byte inside it; a value read must leave the flat arrays consistent (offsets
+// Fuzz target "wkb" (issue 30): pear::io's WKB reader, the flat form pear.triangulate_many uses,
+// on arbitrary bytes: truncated values, counts the bytes cannot hold, wrong byte orders and
+// types. Values are read one after the other into one PolygonArrays, as pear.triangulate_many
+// reads a sequence, until the first ParseError. An error must name a byte inside the value and
+// leave the arrays as they were; a value read must leave the flat arrays consistent (offsets
 // monotone, each ending where the next array ends, no point without its 16 bytes), and its
 // polygons, written again as WKB by this target (either byte order, with a Z ordinate or not,
 // EWKB with an SRID or ISO), must read back bit for bit.
@@ -18,12 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "pear/io.hpp"
 #include "support.hpp"
-#include "wkb.hpp"
 
 namespace {
 
-using pear::python::FlatPolygons;
+using FlatPolygons = pear::io::PolygonArrays;
 
 /// WKB bytes in a chosen byte order (the target's own writer, independent of the reader).
 class Writer {
@@ -106,6 +106,15 @@ void check_consistent(const FlatPolygons& flat, std::size_t g, std::size_t point
   fuzz::require(16 * points <= value_size, "more points than the value has bytes for", where);
 }
 
+/// Equal arrays, coordinates compared bit for bit (NaN included).
+bool same_arrays(const FlatPolygons& a, const FlatPolygons& b) {
+  return a.coordinates.size() == b.coordinates.size() &&
+         (a.coordinates.empty() ||
+          std::memcmp(a.coordinates.data(), b.coordinates.data(), 8 * a.coordinates.size()) == 0) &&
+         a.ring_offsets == b.ring_offsets && a.polygon_offsets == b.polygon_offsets &&
+         a.geometry_offsets == b.geometry_offsets;
+}
+
 /// Geometry g's polygons written again and read back: the same rings and coordinate bits.
 void check_round_trip(const FlatPolygons& flat, std::size_t g, const Rewrite& how) {
   const auto p0 = static_cast<std::size_t>(flat.geometry_offsets[g]);
@@ -113,8 +122,8 @@ void check_round_trip(const FlatPolygons& flat, std::size_t g, const Rewrite& ho
   const std::vector<std::byte> bytes = write_polygons(flat, p0, p1, how);
   FlatPolygons again;
   try {
-    pear::python::read_wkb(bytes, 0, again);
-  } catch (const pear::python::WkbError& error) {
+    pear::io::read_wkb(bytes, again);
+  } catch (const pear::io::ParseError& error) {
     fuzz::fail("written polygons do not read back", error.what());
   }
   const std::int64_t r0 = flat.polygon_offsets[p0], first = flat.ring_offsets[r0];
@@ -150,11 +159,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto value = std::as_bytes(std::span(rest.data() + at, length));
     at += length;
     const std::size_t points_before = flat.coordinates.size() / 2;
+    const FlatPolygons before = flat;
     try {
-      pear::python::read_wkb(value, g, flat);
-    } catch (const pear::python::WkbError& error) {
-      fuzz::require(error.geometry == g && error.offset <= length,
-                    "a WkbError names another value or a byte outside it", error.what());
+      pear::io::read_wkb(value, flat);
+    } catch (const pear::io::ParseError& error) {
+      fuzz::require(error.offset() <= length &&
+                        error.detail().starts_with("byte " + std::to_string(error.offset()) + ": "),
+                    "a ParseError names a byte outside the value, or none", error.what());
+      fuzz::require(same_arrays(flat, before), "a ParseError left part of the value in the arrays",
+                    error.what());
       return 0;  // as pear.triangulate_many: the first error ends the read
     }
     check_consistent(flat, g, points_before, length);

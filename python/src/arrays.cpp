@@ -1,6 +1,8 @@
-// numpy arrays in and out, Options by name, and pear's exceptions raised from C++.
+// numpy arrays in and out, Options by name, pear's exceptions raised from C++, and triangles as
+// WKB (the reading is pear::io::read_wkb).
 #include "arrays.hpp"
 
+#include <bit>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -359,10 +361,10 @@ FlatPolygons geometry_polygons(py::handle geometry) {
   const std::string_view bytes = wkb;
   FlatPolygons flat;
   try {
-    read_wkb(std::as_bytes(std::span(bytes.data(), bytes.size())), 0, flat);
-  } catch (const WkbError& e) {
+    io::read_wkb(std::as_bytes(std::span(bytes.data(), bytes.size())), flat);
+  } catch (const io::ParseError& e) {
     throw py::value_error(std::string(py::str(geometry.attr("geom_type"))) +
-                          " is not a Polygon or MultiPolygon: " + e.what());
+                          " is not a Polygon or MultiPolygon: " + e.detail());
   }
   return flat;
 }
@@ -411,9 +413,9 @@ FlatPolygons read_wkb_sequence(py::handle sequence) {
     for (const auto& value : values) bytes += value.size();
     flat.coordinates.reserve(bytes / 8);  // at most one double per 8 bytes
     try {
-      for (std::size_t g = 0; g < values.size(); ++g) read_wkb(values[g], g, flat);
-    } catch (const WkbError& e) {
-      error = e.what(), index = e.geometry, offset = e.offset;
+      for (; index < values.size(); ++index) io::read_wkb(values[index], flat);
+    } catch (const io::ParseError& e) {
+      error = "geometry " + std::to_string(index) + ", " + e.detail(), offset = e.offset();
     }
   }
   if (!error.empty()) {
@@ -441,6 +443,39 @@ py::object status_object(Status status) {
   if (!members[code])
     members[code] = py::module_::import("pear._types").attr("Status")(code).release().ptr();
   return py::reinterpret_borrow<py::object>(members[code]);
+}
+
+namespace {
+void put_uint32(char*& at, std::uint32_t value) {
+  if constexpr (std::endian::native == std::endian::big) value = __builtin_bswap32(value);
+  std::memcpy(at, &value, 4);
+  at += 4;
+}
+void put_double(char*& at, double value) {
+  auto bits = std::bit_cast<std::uint64_t>(value);
+  if constexpr (std::endian::native == std::endian::big) bits = __builtin_bswap64(bits);
+  std::memcpy(at, &bits, 8);
+  at += 8;
+}
+}  // namespace
+
+std::string triangles_to_wkb(std::span<const double> coordinates,
+                             std::span<const std::array<std::uint32_t, 3>> triangles) {
+  constexpr std::uint32_t wkb_polygon = 3;
+  std::string out(triangles.size() * triangle_wkb_size, '\0');
+  char* at = out.data();
+  for (const auto& t : triangles) {
+    *at++ = 1;  // little endian
+    put_uint32(at, wkb_polygon);
+    put_uint32(at, 1);  // one ring
+    put_uint32(at, 4);  // closed: the first corner again
+    for (int k = 0; k < 4; ++k) {
+      const std::size_t i = t[k % 3];
+      put_double(at, coordinates[2 * i]);
+      put_double(at, coordinates[2 * i + 1]);
+    }
+  }
+  return out;
 }
 
 }  // namespace pear::python

@@ -8,11 +8,12 @@
 #include <array>
 #include <cstdint>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
+#include "pear/io.hpp"
 #include "pear/pear.hpp"
-#include "wkb.hpp"
 
 namespace pear::python {
 
@@ -20,6 +21,8 @@ namespace py = pybind11;
 
 using Coordinates = py::array_t<double, py::array::c_style | py::array::forcecast>;
 using Triangle = std::array<std::uint32_t, 3>;
+/// Polygons read from WKB, every ring with its closing point (pear::io::read_wkb's flat form).
+using FlatPolygons = io::PolygonArrays;
 
 /// The keyword arguments every triangulating function takes, as given.
 struct OptionArguments {
@@ -91,10 +94,18 @@ bool is_geometry(py::handle value);
 /// (every ring closed), so indices into them are indices into its coordinates.
 FlatPolygons geometry_polygons(py::handle geometry);
 /// Reads sequence[i] as WKB (bytes, bytearray or None) for every i, the GIL released while
-/// parsing; a WkbError becomes pear.WKBError.
+/// parsing; a ParseError becomes pear.WKBError naming i and the byte.
 FlatPolygons read_wkb_sequence(py::handle sequence);
 /// Flat polygons as numpy arrays: coordinates (N, 2), ring, polygon and geometry offsets.
 py::tuple flat_arrays(FlatPolygons&& flat);
+
+/// Bytes of one triangle as a WKB Polygon.
+inline constexpr std::size_t triangle_wkb_size = 1 + 4 + 4 + 4 + 4 * 16;
+/// Every triangle (indices into the points of `coordinates`) as a little-endian WKB Polygon of
+/// one closed ring, back to back: triangle t is bytes [t * triangle_wkb_size, (t+1) * ...).
+/// The indices must be in range (the caller checks). No Python: callable without the GIL.
+std::string triangles_to_wkb(std::span<const double> coordinates,
+                             std::span<const std::array<std::uint32_t, 3>> triangles);
 
 /// Registers validate, quality, orient2d, incircle and their result types (checks.cpp).
 void bind_checks(py::module_& module);
