@@ -10,6 +10,7 @@ import gzip
 import json
 import math
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -358,7 +359,7 @@ class Audit(Files):
         os.makedirs(empty)
         r = pear("triangulate", empty)
         self.assertEqual(r.returncode, 1)
-        self.assertIn(empty + ": no .json, .geojson, .wkt or .poly files", r.stderr)
+        self.assertIn(empty + ": no polygon files (.json, .geojson, .wkt, .poly, .wkb", r.stderr)
         for text in ['{"type":"Polygon","coordinates":[]}', "POLYGON EMPTY",
                      '{"type":"FeatureCollection","features":[]}']:
             with self.subTest(text):
@@ -552,6 +553,86 @@ class OutputCollisions(Files):
         for path in (x, y):
             with open(path) as f:
                 self.assertEqual(f.read(), SQUARE_WITH_HOLE)
+
+
+SQUARE_RINGS = [[(0, 0), (10, 0), (10, 10), (0, 10)], [(2, 2), (2, 8), (8, 8), (8, 2)]]
+
+
+def wkb_square(order="<", srid=None, z=False):
+    """SQUARE_RINGS as a WKB Polygon, rings closed, built field by field: ISO (type 3, 1003 with
+    z) or, with an srid, EWKB (flag bits and the SRID after the type)."""
+    code = 3 + (1000 if z and srid is None else 0)
+    if srid is not None:
+        code |= 0x20000000 | (0x80000000 if z else 0)
+    out = struct.pack(order + "BI", 0 if order == ">" else 1, code)
+    if srid is not None:
+        out += struct.pack(order + "I", srid)
+    out += struct.pack(order + "I", len(SQUARE_RINGS))
+    for ring in SQUARE_RINGS:
+        out += struct.pack(order + "I", len(ring) + 1)
+        for x, y in ring + ring[:1]:
+            out += struct.pack(order + ("ddd" if z else "dd"), x, y, *([5.0] if z else []))
+    return out
+
+
+class WkbInputs(Files):
+    """WKB (binary, hex, gzipped, stdin) and EWKT files read as the square with a hole."""
+
+    def assert_squares(self, r, count):
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = stats_lines(r)
+        self.assertEqual(len(lines), count)
+        for line in lines:
+            self.assertEqual((line["vertices"], line["holes"], line["triangles"]), (8, 1, 8))
+            self.assertIs(line["valid"], True)
+
+    def test_wkb_hex_and_ewkt_files(self):
+        self.write("little.wkb", wkb_square(), "wb")
+        self.write("big_ewkb_z.wkb", wkb_square(">", srid=4326, z=True), "wb")
+        # Two values, a line each, upper and lower case: two polygons.
+        self.write("two.hexwkb", wkb_square().hex().upper() + "\n" + wkb_square(">").hex() + "\n")
+        self.write("ewkb.wkb.hex", wkb_square(srid=3857).hex())
+        with gzip.open(os.path.join(self.dir.name, "zipped.wkb.gz"), "wb") as f:
+            f.write(wkb_square(">", z=True))
+        self.write("srid.wkt", "SRID=4326;POLYGON ((0 0, 10 0, 10 10, 0 10, 0 0), "
+                               "(2 2, 2 8, 8 8, 8 2, 2 2))")
+        r = pear("triangulate", "--stats", "--validate", self.dir.name)
+        self.assert_squares(r, 7)
+        self.assertEqual(sorted({os.path.basename(l["file"]) for l in stats_lines(r)}),
+                         ["big_ewkb_z.wkb", "ewkb.wkb.hex", "little.wkb", "srid.wkt", "two.hexwkb",
+                          "zipped.wkb.gz"])
+
+    def test_outputs_are_named_after_the_input_without_its_wkb_extensions(self):
+        inputs = [self.write("a.wkb", wkb_square(), "wb"), self.write("b.wkb.hex", wkb_square().hex()),
+                  self.write("c.hexwkb", wkb_square().hex())]
+        outdir = os.path.join(self.dir.name, "out") + "/"
+        r = pear("triangulate", *inputs, "-o", outdir, "--format", "obj")
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertEqual(sorted(os.listdir(outdir)), ["a.obj", "b.obj", "c.obj"])
+
+    def test_stdin_binary_or_hex_by_its_content(self):
+        for data in (wkb_square(">"), wkb_square(srid=4326).hex().encode() + b"\n"):
+            r = subprocess.run([PEAR, "triangulate", "--stats", "--validate", "-"], input=data,
+                               capture_output=True, timeout=120)
+            r.stdout, r.stderr = r.stdout.decode(), r.stderr.decode()
+            self.assert_squares(r, 1)
+
+    def test_bad_wkb_names_the_byte_and_bad_hex_the_column(self):
+        cases = {
+            "cut.wkb": (wkb_square()[:-3], "wb", ": byte 97: a ring of 5 points needs 80 bytes, 77"),
+            "order.wkb": (b"\x02" + wkb_square()[1:], "wb", ": byte 0: byte order 2 is neither"),
+            "point.wkb": (struct.pack("<BIdd", 1, 1, 0, 0), "wb", ": byte 1: geometry type 1 is not"),
+            "digit.hexwkb": ("0103000000z", "w", ":1:11: expected a hex digit but found 'z'"),
+            "value.hexwkb": (wkb_square().hex() + "\n" + wkb_square().hex()[:40], "w",
+                             ":2:27: value 2, byte 13: a ring of 5 points needs 80 bytes, 7"),
+            "srid.wkt": ("SRID=x;POLYGON EMPTY", "w", ":1:6: expected an integer SRID"),
+        }
+        for name, (data, mode, message) in cases.items():
+            with self.subTest(name):
+                path = self.write(name, data, mode)
+                r = pear("triangulate", path)
+                self.assertEqual(r.returncode, 1, r.stderr)
+                self.assertIn(path + message, r.stderr)
 
 
 class StatsAndGenerate(Files):

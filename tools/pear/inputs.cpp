@@ -24,7 +24,7 @@ namespace {
 bool is_polygon_file(const fs::path& path) {
   std::string name = path.filename().string();
   if (name.ends_with(".gz")) name.resize(name.size() - 3);
-  for (const char* ext : {".json", ".geojson", ".wkt", ".poly"})
+  for (const char* ext : {".json", ".geojson", ".wkt", ".poly", ".wkb", ".hexwkb", ".wkb.hex"})
     if (name.ends_with(ext)) return true;
   return false;
 }
@@ -49,7 +49,9 @@ void add_directory(const fs::path& top, std::vector<Input>& out) {
     if (error) found.push_back({dir.string(), "cannot read the directory: " + error.message()});
   }
   if (found.empty())
-    found.push_back({top.string(), "no .json, .geojson, .wkt or .poly files (or .gz) in it"});
+    found.push_back({top.string(),
+                     "no polygon files (.json, .geojson, .wkt, .poly, .wkb, .hexwkb, "
+                     ".wkb.hex, or .gz) in it"});
   std::sort(found.begin(), found.end(),
             [](const Input& a, const Input& b) { return a.name < b.name; });
   out.insert(out.end(), found.begin(), found.end());

@@ -21,10 +21,10 @@ struct Input {
 };
 
 /// The inputs the arguments name: "-" (stdin) and existing files as given, directories walked
-/// recursively for .json/.geojson/.wkt/.poly (optionally .gz) files in name order (a directory
-/// that cannot be read is an input with its problem, and the walk goes on), other arguments
-/// expanded as globs. An argument that names nothing is kept, so reading it reports the
-/// problem in order with the other files.
+/// recursively for .json/.geojson/.wkt/.poly/.wkb/.hexwkb/.wkb.hex (optionally .gz) files in
+/// name order (a directory that cannot be read is an input with its problem, and the walk goes
+/// on), other arguments expanded as globs. An argument that names nothing is kept, so reading it
+/// reports the problem in order with the other files.
 std::vector<Input> expand_inputs(std::span<const std::string_view> args);
 
 /// A .gz may inflate to at most this many bytes unless --gzip-limit says otherwise; past it, it

@@ -1,4 +1,4 @@
-// pear: triangulate polygons from GeoJSON, WKT and .poly files; see `pear --help`.
+// pear: triangulate polygons from GeoJSON, WKT, WKB and .poly files; see `pear --help`.
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -14,7 +14,7 @@ constexpr const char* help = R"(pear: polygon triangulation by parallel ear clip
 usage: pear COMMAND [OPTIONS] [ARGS]
 
 commands:
-  triangulate FILE...   triangulate every polygon in the files (GeoJSON, WKT, .poly, .gz)
+  triangulate FILE...   triangulate every polygon in the files (GeoJSON, WKT, WKB, .poly, .gz)
   stats FILE...         vertex, convex, reflex and ear counts of each polygon
   generate KIND N       write a synthetic polygon as GeoJSON
 

@@ -45,11 +45,12 @@ std::string_view extension(OutputFormat format) {
   return "";
 }
 
-// input.json.gz -> input; "-" -> stdin.
+// input.json.gz -> input, input.wkb.hex -> input; "-" -> stdin.
 std::string stem(const std::string& input) {
   if (input == "-") return "stdin";
   fs::path path(input);
   if (path.extension() == ".gz") path = path.stem();
+  if (path.extension() == ".hex") path = path.stem();
   return path.stem().string();
 }
 

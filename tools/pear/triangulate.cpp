@@ -38,9 +38,10 @@ void print_help() {
                   std::string(a.summary) + (a.algorithm ? "" : " [not in this build]") + "\n";
   std::printf(R"(usage: pear triangulate [OPTIONS] FILE...
 
-Triangulates every polygon in the files: GeoJSON (.json, .geojson), WKT (.wkt), Triangle's
-.poly, any of them gzipped (.gz); '-' reads stdin. Directories are searched for such files;
-quoted globs are expanded.
+Triangulates every polygon in the files: GeoJSON (.json, .geojson), WKT or EWKT (.wkt),
+Triangle's .poly, WKB or EWKB (.wkb: one value; .hexwkb, .wkb.hex: hex, a value a line), any
+of them gzipped (.gz); '-' reads stdin. Directories are searched for such files; quoted globs
+are expanded.
 
 options:
   --algorithm NAME    which triangulation algorithm (default auto):
