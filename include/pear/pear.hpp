@@ -108,6 +108,14 @@ class PEAR_API Triangulator {
     return result;
   }
 
+  /// Triangulates a polygon given as interleaved coordinates (read where they are).
+  template <class Index = std::uint32_t>
+  Triangulation<Index> triangulate(const CoordinateView& polygon, const Options& options = {}) {
+    Triangulation<Index> result;
+    triangulate_into(polygon, options, result);
+    return result;
+  }
+
   /// Triangulates into `result`, reusing its buffers: a loop over many small polygons then
   /// allocates nothing once they have grown. Its previous contents are replaced.
   template <class Index = std::uint32_t>
