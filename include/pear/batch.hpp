@@ -87,7 +87,8 @@ BatchTriangulation<Index> triangulate_batch(const PolygonBatch& batch,
     BatchTriangulation<Index> narrow;
     narrow.triangles.resize(wide.triangles.size());
     for (std::size_t t = 0; t < wide.triangles.size(); ++t)
-      for (int k = 0; k < 3; ++k) narrow.triangles[t][k] = static_cast<Index>(wide.triangles[t][k]);
+      for (std::size_t k = 0; k < 3; ++k)
+        narrow.triangles[t][k] = static_cast<Index>(wide.triangles[t][k]);
     narrow.triangle_offsets = std::move(wide.triangle_offsets);
     narrow.status = std::move(wide.status);
     narrow.diagnostics = std::move(wide.diagnostics);

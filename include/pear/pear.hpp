@@ -159,7 +159,7 @@ class PEAR_API Triangulator {
       result.status = run(polygon, options, wide, result.diagnostics, result.delaunay);
       result.triangles.resize(wide.size());
       for (std::size_t t = 0; t < wide.size(); ++t)
-        for (int k = 0; k < 3; ++k) result.triangles[t][k] = static_cast<Index>(wide[t][k]);
+        for (std::size_t k = 0; k < 3; ++k) result.triangles[t][k] = static_cast<Index>(wide[t][k]);
     }
   }
 

@@ -60,7 +60,7 @@ ValidationReport validate(const Rings& rings, std::span<const std::array<Index, 
   detail::flatten(rings, flat);
   std::vector<std::array<std::uint32_t, 3>> wide(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k) wide[t][k] = static_cast<std::uint32_t>(triangles[t][k]);
+    for (std::size_t k = 0; k < 3; ++k) wide[t][k] = static_cast<std::uint32_t>(triangles[t][k]);
   return validate(PolygonView{flat.points, flat.ring_starts}, wide, options);
 }
 
