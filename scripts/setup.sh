@@ -7,6 +7,7 @@ if [[ "${1:-}" != minimal ]]; then
   packages+=(libgtest-dev libgmp-dev libbenchmark-dev libcgal-dev libgeos-dev libtbb-dev
              libglu1-mesa-dev python3-matplotlib
              clang clang-format libclang-rt-14-dev   # clang's libFuzzer and sanitizer runtimes
+             cmake                                   # tests/cmake_consumer: find_package(pear)
              # the Python package (python/) and its tests: shapely, geopandas, Dask, earcut
              python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
              python3-shapely python3-geopandas python3-dask python3-distributed
