@@ -11,7 +11,8 @@ if [[ "${1:-}" != minimal ]]; then
              # the Python package (python/) and its tests: shapely, geopandas, Dask, earcut
              python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
              python3-shapely python3-geopandas python3-dask python3-distributed
-             python3-mapbox-earcut)
+             python3-mapbox-earcut
+             python3-mypy)                           # stubtest: the type stubs against the module
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -6,14 +6,17 @@
     triangles = pear.triangulate(square_with_hole, [4])   # (8, 3) uint32 indices
     assert pear.validate(square_with_hole, triangles, [4]).valid
 
-One polygon: triangulate(coords, ring_ends) or triangulate(shapely_polygon). Many:
+One polygon: triangulate(coords, ring_ends) or triangulate(shapely_polygon); with its points
+too, triangulate_points(shapely_polygon), and as shapely Polygons,
+shapely_triangles(*triangulate_points(shapely_polygon)). Many:
 triangulate_many(coords, ring_offsets, polygon_offsets) or triangulate_many(geometries or WKB),
 in parallel with the GIL released. GeoSeries and Dask: pear.geopandas. Reference:
 docs/python.md.
 """
 from ._pear import (Diagnostic, QualityStatistics, ValidationReport, incircle, orient2d, quality,
-                    triangulate, validate)
+                    triangulate, triangulate_points, validate)
 from ._many import BatchResult, triangulate_many
+from ._shapely import shapely_triangles
 from ._types import InvalidInputError, NotSimpleError, PearError, Status, WKBError
 
 __version__ = "0.1.0"
@@ -25,5 +28,5 @@ HEURISTICS = ("top", "fast")
 
 __all__ = ["ALGORITHMS", "BatchResult", "Diagnostic", "HEURISTICS", "InvalidInputError",
            "NotSimpleError", "PearError", "QualityStatistics", "Status", "ValidationReport",
-           "WKBError", "incircle", "orient2d", "quality", "triangulate", "triangulate_many",
-           "validate"]
+           "WKBError", "incircle", "orient2d", "quality", "shapely_triangles", "triangulate",
+           "triangulate_many", "triangulate_points", "validate"]

@@ -426,12 +426,16 @@ FlatPolygons read_wkb_sequence(py::handle sequence) {
   return flat;
 }
 
-py::tuple flat_arrays(FlatPolygons&& flat) {
-  const auto points = static_cast<py::ssize_t>(flat.coordinates.size() / 2);
-  auto* owned = new std::vector<double>(std::move(flat.coordinates));
+py::array points_array(std::vector<double>&& xy) {
+  const auto points = static_cast<py::ssize_t>(xy.size() / 2);
+  auto* owned = new std::vector<double>(std::move(xy));
   py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  py::array coordinates = py::array_t<double>({points, py::ssize_t{2}}, owned->data(), owner);
-  return py::make_tuple(coordinates, vector_array(std::move(flat.ring_offsets)),
+  return py::array_t<double>({points, py::ssize_t{2}}, owned->data(), owner);
+}
+
+py::tuple flat_arrays(FlatPolygons&& flat) {
+  return py::make_tuple(points_array(std::move(flat.coordinates)),
+                        vector_array(std::move(flat.ring_offsets)),
                         vector_array(std::move(flat.polygon_offsets)),
                         vector_array(std::move(flat.geometry_offsets)));
 }

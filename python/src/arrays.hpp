@@ -78,6 +78,8 @@ py::array triangles_array(std::vector<Triangle>&& triangles);
 /// A vector moved into a 1-D numpy array of the same element type (no copy).
 template <class T>
 py::array vector_array(std::vector<T>&& values);
+/// Interleaved coordinates x0, y0, x1, y1, ... moved into an (N, 2) float64 array (no copy).
+py::array points_array(std::vector<double>&& xy);
 /// (M, 3) uint32 triangles from any array-like, checked against `points` (indices in range).
 std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points);
 

@@ -157,13 +157,19 @@ void bind_checks(py::module_& m) {
                ", min_angle_avg_deg=" + std::to_string(q.min_angle_avg_deg) +
                ", dev60_avg_deg=" + std::to_string(q.dev60_avg_deg) + ")";
       });
+  // Text signatures in the docstrings (inspect.signature, help()), as in module.cpp.
+  py::options options;
+  options.disable_function_signatures();
   m.def("validate", &validate_triangles, py::arg("polygon"), py::arg("triangles"),
         py::arg("ring_ends") = py::none(), py::kw_only(), py::arg("check_delaunay") = false,
         py::arg("allow_zero_area") = false, py::arg("check_count") = true,
         py::arg("max_messages") = 20,
+        "validate(polygon, triangles, ring_ends=None, *, check_delaunay=False, "
+        "allow_zero_area=False, check_count=True, max_messages=20)\n--\n\n"
         "Checks exactly that triangles triangulate the polygon (coords and ring_ends, or a "
         "shapely Polygon); returns a ValidationReport.");
   m.def("quality", &triangle_quality, py::arg("coords"), py::arg("triangles"),
+        "quality(coords, triangles)\n--\n\n"
         "Angle statistics of triangles (indices into coords or a shapely geometry's "
         "coordinates).");
   m.def(
@@ -172,6 +178,7 @@ void bind_checks(py::module_& m) {
         return predicate<3>({a, b, c}, [](const auto& p) { return orient2d(p[0], p[1], p[2]); });
       },
       py::arg("a"), py::arg("b"), py::arg("c"),
+      "orient2d(a, b, c)\n--\n\n"
       "Twice the signed area of (a, b, c), its sign exact: > 0 counterclockwise, < 0 "
       "clockwise, 0 collinear. Points, or (N, 2) arrays of them (an array back).");
   m.def(
@@ -181,6 +188,7 @@ void bind_checks(py::module_& m) {
                             [](const auto& p) { return incircle(p[0], p[1], p[2], p[3]); });
       },
       py::arg("a"), py::arg("b"), py::arg("c"), py::arg("d"),
+      "incircle(a, b, c, d)\n--\n\n"
       "For counterclockwise a, b, c: > 0 if d is inside their circumcircle, < 0 outside, 0 on "
       "it, the sign exact. Points, or (N, 2) arrays of them (an array back).");
 }

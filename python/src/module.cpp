@@ -40,27 +40,34 @@ Triangulation<>& run(Scratch& s, const CoordinateView& view, const Options& opti
   return s.result;
 }
 
-/// The result as pear.triangulate returns it, or the exception it raises. Large triangle
-/// lists are moved into the array, small ones copied (the buffer stays for the next call).
-py::object finish(Triangulation<>& result, bool strict, const std::string& where = {}) {
+/// The result as pear.triangulate returns it, or the exception it raises; `points` (not null
+/// for triangulate_points) goes first. Large triangle lists are moved into the array, small
+/// ones copied (the buffer stays for the next call).
+py::object finish(Triangulation<>& result, bool strict, const py::object& points,
+                  const std::string& where = {}) {
   py::object triangles = triangles_array(std::move(result.triangles));
   if (result.status == Status::invalid_input || result.status == Status::index_overflow ||
       (result.status == Status::not_simple && strict))
     raise_for_status(result.status, result.diagnostics, triangles, where);
+  if (points) {
+    if (strict) return py::make_tuple(points, triangles);
+    return py::make_tuple(points, triangles, status_object(result.status));
+  }
   if (strict) return triangles;
   return py::make_tuple(triangles, status_object(result.status));
 }
 
 /// A shapely Polygon or MultiPolygon: its parts as one batch (pear's one run per part),
 /// indices into the geometry's coordinates; the worst status of the parts (the first part
-/// that has it names the place).
-py::object triangulate_geometry(py::handle geometry, const Options& options, bool strict) {
-  const FlatPolygons flat = geometry_polygons(geometry);
+/// that has it names the place). with_points: those coordinates come back too.
+py::object triangulate_geometry(py::handle geometry, const Options& options, bool strict,
+                                bool with_points) {
+  FlatPolygons flat = geometry_polygons(geometry);
   const std::size_t parts = flat.polygon_offsets.size() - 1;
   Scratch& s = thread_scratch();
   if (parts == 0) {  // an empty geometry: what empty coordinates give (empty_input)
     s.ring_offsets.assign(1, 0);
-    return finish(run(s, CoordinateView{{}, s.ring_offsets}, options), strict);
+    return finish(run(s, CoordinateView{{}, s.ring_offsets}, options), strict, py::object());
   }
   const PolygonBatch batch{flat.coordinates, flat.ring_offsets, flat.polygon_offsets};
   BatchTriangulation<> result;
@@ -81,15 +88,16 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
                            result.diagnostics.begin() + result.diagnostic_offsets[worst + 1]);
     if (parts > 1) where = "polygon " + std::to_string(worst) + " of the MultiPolygon, ";
   }
-  return finish(all, strict, where);
+  const py::object points = with_points ? points_array(std::move(flat.coordinates)) : py::object();
+  return finish(all, strict, points, where);
 }
 
-py::object triangulate(py::handle coords, py::handle ring_ends, const Options& options,
-                       bool strict) {
+py::object triangulate(py::handle coords, py::handle ring_ends, const Options& options, bool strict,
+                       bool with_points) {
   if (is_geometry(coords)) {
     if (!ring_ends.is_none())
       throw py::type_error("ring_ends goes with coordinates, not with a shapely geometry");
-    return triangulate_geometry(coords, options, strict);
+    return triangulate_geometry(coords, options, strict, with_points);
   }
   const Coordinates array = as_coordinates(coords);
   const auto n = static_cast<std::size_t>(array.shape(0));
@@ -98,22 +106,24 @@ py::object triangulate(py::handle coords, py::handle ring_ends, const Options& o
   Scratch& s = thread_scratch();
   ring_offsets_from(ring_ends, n, s.ring_offsets);
   return finish(run(s, CoordinateView{std::span(array.data(), 2 * n), s.ring_offsets}, options),
-                strict);
+                strict, with_points ? py::object(array) : py::object());
 }
 
-/// triangulate's arguments, as pear.triangulate's signature names them.
+/// triangulate's arguments, as pear.triangulate's signature names them (and
+/// pear.triangulate_points', the same).
 struct TriangulateArguments {
   py::handle coords, ring_ends;  // null until given
   OptionArguments options;
   bool strict = true;
 };
 
-void keyword_argument(TriangulateArguments& a, std::string_view name, py::handle value) {
+void keyword_argument(TriangulateArguments& a, const char* function, std::string_view name,
+                      py::handle value) {
   // A keyword that names a positional argument given already: TypeError, as Python says it.
   const auto once = [&](py::handle& slot) {
     if (slot)
-      throw py::type_error("triangulate() got multiple values for argument '" + std::string(name) +
-                           "'");
+      throw py::type_error(std::string(function) + "() got multiple values for argument '" +
+                           std::string(name) + "'");
     slot = value;
   };
   if (name == "strict")
@@ -123,26 +133,34 @@ void keyword_argument(TriangulateArguments& a, std::string_view name, py::handle
   else if (name == "coords")
     once(a.coords);
   else if (!option_argument(a.options, name, value))
-    throw py::type_error("triangulate() got an unexpected keyword argument '" + std::string(name) +
-                         "'");
+    throw py::type_error(std::string(function) + "() got an unexpected keyword argument '" +
+                         std::string(name) + "'");
 }
 
-/// pear.triangulate as a vectorcall function: for polygons of a few dozen points the generic
-/// binding's argument handling (a dict per call for keywords) cost as much as the triangulation.
+/// pear.triangulate (and, WithPoints, pear.triangulate_points) as a vectorcall function: for
+/// polygons of a few dozen points the generic binding's argument handling (a dict per call for
+/// keywords) cost as much as the triangulation.
+template <bool WithPoints>
 PyObject* triangulate_vectorcall(PyObject*, PyObject* const* args, Py_ssize_t positional,
                                  PyObject* keyword_names) {
+  // The name for messages: a string is made only for an error (a call makes none).
+  constexpr const char* function = WithPoints ? "triangulate_points" : "triangulate";
   try {
     TriangulateArguments a;
-    if (positional > 2) throw py::type_error("triangulate() takes at most 2 positional arguments");
+    if (positional > 2)
+      throw py::type_error(std::string(function) + "() takes at most 2 positional arguments");
     if (positional > 0) a.coords = args[0];
     if (positional > 1) a.ring_ends = args[1];
     const Py_ssize_t keywords = keyword_names ? PyTuple_GET_SIZE(keyword_names) : 0;
     for (Py_ssize_t k = 0; k < keywords; ++k)
-      keyword_argument(a, string_argument(PyTuple_GET_ITEM(keyword_names, k), "a keyword"),
+      keyword_argument(a, function,
+                       string_argument(PyTuple_GET_ITEM(keyword_names, k), "a keyword"),
                        args[positional + k]);
-    if (!a.coords) throw py::type_error("triangulate() missing its argument 'coords'");
+    if (!a.coords) throw py::type_error(std::string(function) + "() missing its argument 'coords'");
     const py::handle ring_ends = a.ring_ends ? a.ring_ends : py::handle(Py_None);
-    return triangulate(a.coords, ring_ends, make_options(a.options), a.strict).release().ptr();
+    return triangulate(a.coords, ring_ends, make_options(a.options), a.strict, WithPoints)
+        .release()
+        .ptr();
   } catch (py::error_already_set& e) {
     e.restore();
   } catch (const py::builtin_exception& e) {
@@ -155,22 +173,36 @@ PyObject* triangulate_vectorcall(PyObject*, PyObject* const* args, Py_ssize_t po
   return nullptr;
 }
 
+// The first line of each docstring is the signature inspect.signature and help() read.
 PyMethodDef triangulate_definition = {
     "triangulate",
-    reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&triangulate_vectorcall)),
+    reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&triangulate_vectorcall<false>)),
     METH_FASTCALL | METH_KEYWORDS,
     "triangulate(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
     "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
     "Triangulates one polygon; returns an (M, 3) uint32 array of indices into coords.\n\n"
     "coords: an (N, 2) array-like of real numbers (a C-contiguous float64 array is not\n"
     "converted), or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings\n"
-    "closed, in shapely's order). ring_ends: None (one ring), integer ring offsets [0, ..., N],\n"
-    "earcut's ring ends [..., N] or earcut's hole indices. Raises pear.InvalidInputError (a\n"
-    "ValueError) naming ring and vertex for input that cannot be triangulated,\n"
-    "pear.NotSimpleError carrying the best-effort triangles for a polygon that is not simple;\n"
-    "strict=False returns (triangles, pear.Status) instead of raising NotSimpleError. Wrong\n"
-    "types raise TypeError, wrong shapes and values out of range ValueError. See\n"
-    "docs/python.md."};
+    "closed, in shapely's order: pear.triangulate_points returns them with the triangles).\n"
+    "ring_ends: None (one ring), integer ring offsets [0, ..., N], earcut's ring ends [..., N]\n"
+    "or earcut's hole indices. Raises pear.InvalidInputError (a ValueError) naming ring and\n"
+    "vertex for input that cannot be triangulated, pear.NotSimpleError carrying the\n"
+    "best-effort triangles for a polygon that is not simple; strict=False returns (triangles,\n"
+    "pear.Status) instead of raising NotSimpleError. Wrong types raise TypeError, wrong shapes\n"
+    "and values out of range ValueError. See docs/python.md."};
+
+PyMethodDef triangulate_points_definition = {
+    "triangulate_points",
+    reinterpret_cast<PyCFunction>(reinterpret_cast<void (*)()>(&triangulate_vectorcall<true>)),
+    METH_FASTCALL | METH_KEYWORDS,
+    "triangulate_points(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
+    "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
+    "pear.triangulate, returning (points, triangles): points the (N, 2) float64 coordinates\n"
+    "the triangles index (for a shapely Polygon/MultiPolygon its coordinates in shapely's\n"
+    "order, every ring closed; for an array, coords as read), triangles the (M, 3) uint32\n"
+    "array. strict=False returns (points, triangles, pear.Status). Arguments and exceptions\n"
+    "as for triangulate. pear.shapely_triangles(points, triangles) makes shapely Polygons of\n"
+    "them. See docs/python.md."};
 
 /// triangulate_batch's result as numpy arrays, by name (pear._many.BatchResult wraps it).
 struct BatchArrays {
@@ -282,11 +314,45 @@ void bind_diagnostic(py::module_& m) {
             return Diagnostic{static_cast<Issue>(t[0].cast<int>()), t[1].cast<std::size_t>(),
                               t[2].cast<std::size_t>()};
           }));
+}
+
+py::object vectorcall_function(PyMethodDef& definition) {
+  return py::reinterpret_steal<py::object>(
+      PyCFunction_NewEx(&definition, nullptr, py::str("pear._pear").ptr()));
+}
+
+/// The module's functions. Each docstring starts with its signature in CPython's text
+/// signature form ("name(args)\n--\n\n"), which inspect.signature and help() read: pybind11's
+/// own would show every argument as a py::handle.
+void bind_functions(py::module_& m) {
+  py::options options;
+  options.disable_function_signatures();
+  m.add_object("triangulate", vectorcall_function(triangulate_definition));
+  m.add_object("triangulate_points", vectorcall_function(triangulate_points_definition));
+  m.def("triangulate_batch", &triangulate_batch, py::arg("coords"), py::arg("ring_offsets"),
+        py::arg("polygon_offsets"),
+        "triangulate_batch(coords, ring_offsets, polygon_offsets, **options)\n--\n\n"
+        "Ragged arrays in, the batch's arrays out; use pear.triangulate_many.");
+  m.def(
+      "as_offsets", [](py::handle values, const char* name) { return as_offsets(values, name); },
+      py::arg("values"), py::arg("name"),
+      "as_offsets(values, name)\n--\n\n"
+      "values as a 1-D int64 array by pear's rules (docs/python.md); errors name `name`.");
+  m.def(
+      "read_wkb", [](py::handle values) { return flat_arrays(read_wkb_sequence(values)); },
+      py::arg("values"),
+      "read_wkb(values)\n--\n\n"
+      "WKB values (bytes or None) to (coords, ring_offsets, polygon_offsets, "
+      "geometry_offsets); raises pear.WKBError naming the geometry and the byte.");
+  m.def("triangles_wkb", &triangles_wkb, py::arg("coords"), py::arg("triangles"),
+        "triangles_wkb(coords, triangles)\n--\n\nEach triangle as WKB Polygon bytes.");
   m.def(
       "describe_issue",
       [](int issue, std::size_t ring, std::size_t vertex) {
         return Diagnostic{static_cast<Issue>(issue), ring, vertex};
       },
+      py::arg("issue"), py::arg("ring"), py::arg("vertex"),
+      "describe_issue(issue, ring, vertex)\n--\n\n"
       "A Diagnostic from an issue code and its place (triangulate_many's arrays).");
 }
 
@@ -299,22 +365,6 @@ PYBIND11_MODULE(_pear, m) {
   m.doc() = "pear's C++ core; use the package pear (docs/python.md).";
   bind_diagnostic(m);
   bind_batch_arrays(m);
-  m.add_object("triangulate", py::reinterpret_steal<py::object>(PyCFunction_NewEx(
-                                  &triangulate_definition, nullptr, py::str("pear._pear").ptr())));
-  m.def("triangulate_batch", &triangulate_batch, py::arg("coords"), py::arg("ring_offsets"),
-        py::arg("polygon_offsets"),
-        "Ragged arrays in, the batch's arrays out (options by keyword); use "
-        "pear.triangulate_many.");
-  m.def(
-      "as_offsets", [](py::handle values, const char* name) { return as_offsets(values, name); },
-      py::arg("values"), py::arg("name"),
-      "values as a 1-D int64 array by pear's rules (docs/python.md); errors name `name`.");
-  m.def(
-      "read_wkb", [](py::handle values) { return flat_arrays(read_wkb_sequence(values)); },
-      py::arg("values"),
-      "WKB values (bytes or None) to (coords, ring_offsets, polygon_offsets, "
-      "geometry_offsets); raises pear.WKBError naming the geometry and the byte.");
-  m.def("triangles_wkb", &triangles_wkb, py::arg("coords"), py::arg("triangles"),
-        "Each triangle as WKB Polygon bytes.");
+  bind_functions(m);
   bind_checks(m);
 }

@@ -69,6 +69,15 @@ def folder(name, limit=None, only=None):
     return [p for f in files for p in read_geojson(f.path, f.valid)]
 
 
+def child_environment(**extra):
+    """os.environ for a child Python that imports the pear this process imported (first on its
+    PYTHONPATH, made absolute: the child may run in another folder), plus `extra`."""
+    import pear
+    search = [str(pathlib.Path(pear.__file__).resolve().parents[1]),
+              os.environ.get("PYTHONPATH", "")]
+    return {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, search)), **extra}
+
+
 def scaled_integers(coords):
     """The coordinates as Python integers, all scaled by one power of two: exact."""
     ratios = [x.as_integer_ratio() for x in np.asarray(coords, dtype=np.float64).ravel().tolist()]
