@@ -1,14 +1,17 @@
 """What a Python user expects of any package: real signatures (inspect.signature, help()) that
-agree with docs/python.md, type stubs that parse and agree with the functions, and triangles
-with their points for shapely input, checked in exact arithmetic."""
+agree with docs/python.md, type stubs that parse and agree with the functions, the package's
+metadata, and triangles with their points for shapely input, checked in exact arithmetic."""
 import ast
+import email
 import importlib
+import importlib.metadata
 import inspect
 import pathlib
 import pydoc
 import re
 import subprocess
 import sys
+import tomllib
 from fractions import Fraction
 
 import numpy as np
@@ -148,6 +151,47 @@ def test_stubs_agree_with_the_module_in_mypy_stubtest(tmp_path):
                           "--allowlist", str(REPO / "python" / "stubtest-allowlist.txt")],
                          capture_output=True, text=True, timeout=300, cwd=tmp_path, env=env)
     assert run.returncode == 0, run.stdout + run.stderr
+
+
+def pyproject_metadata():
+    """The core metadata meson-python writes into the wheel, from pyproject.toml."""
+    pyproject_metadata = pytest.importorskip("pyproject_metadata")
+    config = tomllib.loads((REPO / "pyproject.toml").read_text())
+    message = pyproject_metadata.StandardMetadata.from_pyproject(config, REPO).as_rfc822()
+    return email.message_from_bytes(bytes(message))
+
+
+def check_metadata(metadata):
+    spdx = metadata.get("License-Expression") or metadata.get("License")
+    assert spdx == "MIT", f"License is {spdx[:60]!r}..., not an SPDX expression"
+    classifiers = metadata.get_all("Classifier") or []
+    assert "License :: OSI Approved :: MIT License" in classifiers
+    assert any(c.startswith("Programming Language :: Python :: 3") for c in classifiers)
+    assert "Typing :: Typed" in classifiers
+    urls = metadata.get_all("Project-URL") or []
+    assert all(re.fullmatch(r"[^,]+, https://\S+", url) for url in urls), urls
+
+
+def test_wheel_metadata_from_pyproject():
+    check_metadata(pyproject_metadata())
+
+
+@pytest.mark.xfail(strict=True, reason="pear has no public address yet: pyproject.toml's "
+                   "[project.urls] is to name it (then remove this mark)")
+def test_wheel_metadata_has_project_urls():
+    assert pyproject_metadata().get_all("Project-URL")
+
+
+def test_installed_metadata():
+    try:
+        distribution = importlib.metadata.distribution("pear")
+    except importlib.metadata.PackageNotFoundError:
+        pytest.skip("pear is imported from a build tree, not installed (pip install .)")
+    if pathlib.Path(distribution.locate_file("pear")) != PACKAGE:
+        pytest.skip(f"the pear installed at {distribution.locate_file('')} is not the one imported")
+    check_metadata(distribution.metadata)
+    files = {str(f) for f in distribution.files or []}
+    assert {"pear/py.typed", "pear/__init__.pyi", "pear/_pear.pyi", "pear/LICENSE"} <= files
 
 
 def twice_area(points):
