@@ -78,6 +78,18 @@ def child_environment(**extra):
     return {**os.environ, "PYTHONPATH": os.pathsep.join(filter(None, search)), **extra}
 
 
+def counties_frame():
+    """The shared corpus' counties as a GeoDataFrame (column file, EPSG:4326); skips the test
+    when they are absent."""
+    import geopandas
+    from shapely.geometry import shape
+    files = corpus.read_folder(corpus.shared_root(), "counties")
+    corpus.require(*(f.path for f in files))
+    geometries = [shape(json.loads(f.path.read_text())) for f in files]
+    return geopandas.GeoDataFrame({"file": [f.file for f in files]}, geometry=geometries,
+                                  crs="EPSG:4326")
+
+
 def scaled_integers(coords):
     """The coordinates as Python integers, all scaled by one power of two: exact."""
     ratios = [x.as_integer_ratio() for x in np.asarray(coords, dtype=np.float64).ravel().tolist()]

@@ -1,17 +1,14 @@
 """pear.geopandas: GeoSeries and GeoDataFrames in, per-row triangles and triangle polygons out,
 and the county folder on a real Dask cluster (two worker processes) as in one process."""
-import json
-
 import numpy as np
 import pytest
 
-import corpus
 import pear
-from polygons import BOWTIE, SQUARE_WITH_HOLE, exact_check
+from polygons import BOWTIE, SQUARE_WITH_HOLE, counties_frame, exact_check
 
 geopandas = pytest.importorskip("geopandas")
 pear_geopandas = pytest.importorskip("pear.geopandas")
-from shapely.geometry import MultiPolygon, Polygon, shape  # noqa: E402 (after geopandas)
+from shapely.geometry import MultiPolygon, Polygon  # noqa: E402 (after geopandas)
 
 SQUARE = Polygon(SQUARE_WITH_HOLE[:4], [SQUARE_WITH_HOLE[4:]])
 MULTI = MultiPolygon([SQUARE, Polygon([(20, 0), (30, 0), (30, 10)])])
@@ -90,19 +87,11 @@ def test_options_follow_triangulate_many(function):
         call(frame(), delaunay="no")
 
 
-def counties():
-    files = corpus.read_folder(corpus.shared_root(), "counties")
-    corpus.require(*(f.path for f in files))
-    geometries = [shape(json.loads(f.path.read_text())) for f in files]
-    return geopandas.GeoDataFrame({"file": [f.file for f in files]}, geometry=geometries,
-                                  crs="EPSG:4326")
-
-
 def test_counties_on_a_dask_cluster_equal_one_process():
     """map_partitions over 2 worker processes gives what one call in this process gives."""
     dd = pytest.importorskip("dask.dataframe")
     distributed = pytest.importorskip("distributed")
-    data = counties()
+    data = counties_frame()
     expected = pear_geopandas.triangulate(data)
     expected_pieces = pear_geopandas.triangle_polygons(data)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
