@@ -5,8 +5,8 @@
 // met walking the cycle, and the ear test looks only at the reflex nodes near the ear: up to 64
 // nodes those a SIMD scan of their positions finds in its box (box_scan's points_in_box), past
 // 64 those of the slabs the box meets. No grid, bucket queue or pinch table to set up; each step
-// still scans, so the cost per vertex grows with n: at about 512 vertices the queue is as fast
-// (bench_small's crossover).
+// still scans, so the cost per vertex grows with n (bench_strategies: at 384 nodes two thirds
+// of the queue's time, at 16 a third; docs/engine.md).
 #pragma once
 
 #include <array>

@@ -9,11 +9,18 @@
 namespace pear::detail {
 namespace {
 
+/// The machine's hardware threads, asked once: std::thread::hardware_concurrency reads
+/// /sys on Linux, which cost a county's call five times its triangulation.
+unsigned hardware_threads() {
+  static const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+  return threads;
+}
+
 /// The most workers a private executor gets: more than a few per hardware thread give no
 /// speed, only context switches (4,096 on 2 cores made a mark-and-cut of a 50,000-vertex star
 /// 20x slower than 16 did). The output depends on the partitions, never on the workers.
 std::uint32_t worker_limit() {
-  return std::max(16u, 4 * std::thread::hardware_concurrency());
+  return std::max(16u, 4 * hardware_threads());
 }
 
 class ExecutorRunner final : public TaskRunner {
@@ -45,7 +52,7 @@ Workers& Workers::operator=(Workers&&) noexcept = default;
 std::uint32_t Workers::concurrency(const Options& options) {
   if (options.executor) return static_cast<std::uint32_t>(options.executor->concurrency());
   if (options.threads != 0) return options.threads;
-  return std::max(1u, std::thread::hardware_concurrency());
+  return hardware_threads();
 }
 
 Executor* Workers::executor(const Options& options) {
