@@ -70,13 +70,13 @@ inline bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::
   return blocks_on_boundary(b, links, p, v, n, q, o1, o3);
 }
 
-/// Whether the diagonal p-n of an ear at v is clear at its ends: no boundary edge runs along it
-/// from one of them (a collinear chain there is not hashed as reflex). Both orientations, then
-/// one branch: whether a neighbour's neighbour lies on the diagonal's line is rare, whether it
-/// lies in its box a coin toss for the branch predictor.
-inline bool diagonal_clear_at_ends(const Boundary& b, std::uint32_t p, std::uint32_t n) {
-  const Point &a = b.pos[p], &c = b.pos[n];
-  const Point &before = b.pos[b.prev[p]], &after = b.pos[b.next[n]];
+/// Whether the diagonal a-c of an ear is clear at its ends: no boundary edge runs along it from
+/// one of them (a collinear chain there is not hashed as reflex); `before` precedes a on the
+/// boundary, `after` follows c. Both orientations, then one branch: whether a neighbour's
+/// neighbour lies on the diagonal's line is rare, whether it lies in its box a coin toss for the
+/// branch predictor. The points come by value: orient2d's exact stage is a call, after which
+/// anything read through a reference would be read again.
+inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) {
   const double turn_after = orient2d(a, c, after), turn_before = orient2d(a, c, before);
   if ((turn_after == 0) | (turn_before == 0)) {
     if (turn_after == 0 && on_open_segment(after, a, c)) return false;
@@ -92,8 +92,9 @@ inline bool diagonal_clear_at_ends(const Boundary& b, std::uint32_t p, std::uint
 template <class Links, class Near>
 bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near) {
   const std::uint32_t p = b.prev[v], n = b.next[v];
-  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
-  if (!(orient2d(a, t, c) > 0) || !diagonal_clear_at_ends(b, p, n)) return false;
+  const Point a = b.pos[p], t = b.pos[v], c = b.pos[n];
+  if (!(orient2d(a, t, c) > 0) || !diagonal_clear_at_ends(a, c, b.pos[b.prev[p]], b.pos[b.next[n]]))
+    return false;
   const Point lo{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y})};
   const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
   return !near(a, t, c, [&](const ReflexGrid::Entry& e) {

@@ -95,12 +95,12 @@ inline void BitsetClipper::refresh(std::uint32_t v) {
 /// strictly reflex ones and those at a repeated position, near the ear's box.
 bool BitsetClipper::is_ear(std::uint32_t v) const {
   const Boundary& b = *b_;
+  const Point* pos = b.pos.data();
   const std::uint32_t p = b.prev[v], n = b.next[v];
-  if (!diagonal_clear_at_ends(b, p, n)) return false;
-  const Point &a = b.pos[p], &t = b.pos[v], &c = b.pos[n];
+  const Point a = pos[p], t = pos[v], c = pos[n];
+  if (!diagonal_clear_at_ends(a, c, pos[b.prev[p]], pos[b.next[n]])) return false;
   const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
   const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
-  const Point* pos = b.pos.data();
   // The ear's own corners cannot block it. Each node left is tested for the box first: most
   // lie outside.
   const auto blocked = [&](std::uint64_t near, std::uint32_t w) {
