@@ -69,6 +69,15 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
     s.ring_offsets.assign(1, 0);
     return finish(run(s, CoordinateView{{}, s.ring_offsets}, options), strict, py::object());
   }
+  if (parts == 1 && flat.coordinates.size() / 2 <= std::size_t{0xFFFFFFFF}) {
+    // A Polygon: the one run on its coordinates, no batch to set up.
+    s.ring_offsets.assign(flat.ring_offsets.begin(), flat.ring_offsets.end());
+    const CoordinateView view{flat.coordinates, s.ring_offsets};
+    Triangulation<>& one = run(s, view, options);
+    const py::object points =
+        with_points ? points_array(std::move(flat.coordinates)) : py::object();
+    return finish(one, strict, points);
+  }
   const PolygonBatch batch{flat.coordinates, flat.ring_offsets, flat.polygon_offsets};
   BatchTriangulation<> result;
   if (flat.coordinates.size() < 2 * release_gil_points) {
