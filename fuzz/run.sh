@@ -19,7 +19,11 @@ if [[ ! -f $build/build.ninja ]]; then
     -Dcli=disabled -Db_sanitize=address,undefined -Db_lundef=false >/dev/null
 fi
 # One build at a time in the build folder, so that several targets can be started at once.
-flock "$build/.fuzz-build.lock" ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" >/dev/null
+# ninja's output only when the build fails: it names the error on stdout.
+if ! log=$(flock "$build/.fuzz-build.lock" ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" 2>&1); then
+  printf '%s\n' "$log" >&2
+  exit 1
+fi
 work=$build/fuzz-corpus/$target
 artifacts=$build/fuzz-artifacts/$target/
 mkdir -p "$work" "$artifacts"

@@ -253,7 +253,8 @@ Verdict verdict_of(std::uint32_t smallest, bool touching) {
 /// against the edges after it), then the exact tests for the few rows where boxes meet.
 Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  auto& [x0, y0, x1, y1] = columns_;
+  // References, not a structured binding: clang 14 cannot capture bindings in a lambda.
+  auto &x0 = columns_[0], &y0 = columns_[1], &x1 = columns_[2], &y1 = columns_[3];
   link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
     x0[e] = std::min(a.x, b.x), y0[e] = std::min(a.y, b.y);
     x1[e] = std::max(a.x, b.x), y1[e] = std::max(a.y, b.y);
