@@ -114,12 +114,16 @@ class BatchResult:
 def _wkb_writer():
     """One shapely geometry to WKB: shapely 1.8's writer made once per batch (half the time of
     .wkb, which makes a writer per geometry), else .wkb. A writer is not shared between calls:
-    GEOS writers are not thread-safe."""
+    GEOS writers are not thread-safe. The writer reads a geometry's _geom as a GEOS address,
+    so it only gets shapely's own geometries: another object with a wkb gives its .wkb."""
     try:
+        from shapely.geometry.base import BaseGeometry
         from shapely.geos import WKBWriter, lgeos  # shapely 1.8
-        return WKBWriter(lgeos).write
     except ImportError:
         return lambda geometry: geometry.wkb
+    write = WKBWriter(lgeos).write
+    return lambda geometry: write(geometry) if isinstance(geometry, BaseGeometry) \
+        else geometry.wkb
 
 
 def _vectorised_wkb(geometries):
@@ -135,29 +139,60 @@ def _vectorised_wkb(geometries):
         return None  # something that is not a geometry: the module names it
 
 
-def _wkb_values(geometries):
-    """WKB bytes (or None) for each of a sequence of shapely geometries, WKB values or None;
-    what is none of these is passed on for the module to name."""
+#: Whether shapely 1.8 geometries are read through their GEOS handles (False: as WKB, the
+#: path every other input takes; the benchmark and the tests compare the two).
+_read_geos_handles = True
+
+
+def _geos_reader():
+    """shapely 1.8's libgeos_c (its dlopen handle) and geometry base class, or None: shapely 2
+    has no handles to read (to_wkb is vectorised), a module built without geos_c.h no reader."""
+    if not (_read_geos_handles and _pear.has_geos_reader):
+        return None
+    try:
+        from shapely.geos import lgeos  # shapely 1.8 (2.0 has no shapely.geos.lgeos)
+        from shapely.geometry.base import BaseGeometry
+        library = lgeos._lgeos._handle
+    except (ImportError, AttributeError):
+        return None
+    return (library, BaseGeometry) if isinstance(library, int) and library else None
+
+
+def _as_sequence(geometries):
+    """geometries as a list or array: one geometry or WKB value becomes a list of one."""
     # hasattr on the type: shapely's wkb is a property, asking a geometry writes its WKB.
     if isinstance(geometries, (bytes, bytearray)) or hasattr(type(geometries), "wkb"):
-        geometries = [geometries]
-    if not isinstance(geometries, (list, np.ndarray)):
-        try:
-            geometries = list(geometries)
-        except TypeError:
-            raise TypeError("data must be an (N, 2) array with offsets, or a sequence of "
-                            f"geometries, WKB values or None, not {type(geometries).__name__}"
-                            ) from None
+        return [geometries]
+    if isinstance(geometries, (list, np.ndarray)):
+        return geometries
+    try:
+        return list(geometries)
+    except TypeError:
+        raise TypeError("data must be an (N, 2) array with offsets, or a sequence of "
+                        f"geometries, WKB values or None, not {type(geometries).__name__}"
+                        ) from None
+
+
+def _read_geometries(geometries):
+    """(coords, ring_offsets, polygon_offsets, geometry_offsets) of a sequence of shapely
+    geometries, WKB values or None: shapely 1.8's through their GEOS handles where they all
+    can be, else from WKB; what is none of these is passed on for the module to name."""
+    geometries = _as_sequence(geometries)
     # WKB goes to the module as it is (it names any element that is not WKB): a Python test of
     # every element would cost a tenth of a small polygon's triangulation.
     first = next((v for v in geometries if v is not None), None)
     if first is None or isinstance(first, (bytes, bytearray)):
-        return geometries
+        return _pear.read_wkb(geometries)
+    reader = _geos_reader()
+    if reader is not None:
+        flat = _pear.read_geos(geometries, *reader)
+        if flat is not None:
+            return flat
     vectorised = _vectorised_wkb(geometries)
     if vectorised is not None:
-        return vectorised
+        return _pear.read_wkb(vectorised)
     write = _wkb_writer()
-    return [write(v) if hasattr(type(v), "wkb") else v for v in geometries]
+    return _pear.read_wkb([write(v) if hasattr(type(v), "wkb") else v for v in geometries])
 
 
 def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_offsets=None, *,
@@ -178,7 +213,7 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
     if ring_offsets is None:
         if polygon_offsets is not None or geometry_offsets is not None:
             raise TypeError("polygon_offsets and geometry_offsets go with ring_offsets")
-        coords, ring_offsets, polygon_offsets, geometry_offsets = _pear.read_wkb(_wkb_values(data))
+        coords, ring_offsets, polygon_offsets, geometry_offsets = _read_geometries(data)
     else:
         if polygon_offsets is None:
             raise TypeError("ring_offsets needs polygon_offsets (one polygon: [0, rings])")

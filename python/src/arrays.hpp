@@ -109,6 +109,15 @@ inline constexpr std::size_t triangle_wkb_size = 1 + 4 + 4 + 4 + 4 * 16;
 std::string triangles_to_wkb(std::span<const double> coordinates,
                              std::span<const std::array<std::uint32_t, 3>> triangles);
 
+/// shapely 1.8 geometries (or None) read through their GEOS handles (geos.cpp) into what
+/// flat_arrays(read_wkb_sequence(their WKB)) would give; None where the caller must write WKB
+/// instead: an element that is not a `geometry_type` with a handle, a geometry that is not a
+/// Polygon, MultiPolygon or empty collection, a GEOS before 3.10, a module built without
+/// geos_c.h. `library`: the dlopen handle of shapely's libgeos_c (its ctypes CDLL's _handle).
+py::object read_geos(py::handle sequence, std::uintptr_t library, py::handle geometry_type);
+/// Whether the module was built with geos.cpp's reader.
+bool has_geos_reader();
+
 /// Registers validate, quality, orient2d, incircle and their result types (checks.cpp).
 void bind_checks(py::module_& module);
 

@@ -1,0 +1,95 @@
+#!/usr/bin/env python3
+"""pear.triangulate_many over shapely polygons: through WKB, through their GEOS handles (shapely
+1.8), against ragged arrays and the per-polygon loop over numpy arrays, in one process.
+
+usage: /usr/bin/python3 bench/python/bench_shapely.py [--build BUILD] [--rounds N]
+           [--folder counties]
+
+Imports pear from BUILD/python (default build/). The folder's polygons are loaded once as
+numpy arrays (coordinates without closing points, ring ends), as ragged arrays and as shapely
+geometries. Rounds interleave the candidates, each timed run after an untimed one
+(bench_python.measure); the table gives medians over the rounds and each one's speed
+against the per-polygon loop. `uptime` is printed before and after. CI does not run this.
+"""
+import argparse
+import os
+import pathlib
+import subprocess
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from bench_python import ROOT, load, measure, ragged  # noqa: E402 (this folder)
+
+
+def shapely_polygons(polygons):
+    from shapely.geometry import Polygon
+    return [Polygon(c[:e[0]], [c[a:b] for a, b in zip(e[:-1], e[1:])]) for c, e in polygons]
+
+
+def candidates(pear, polygons):
+    """name -> function running one pass over the polygons."""
+    coords, rings, first_ring = ragged(polygons)
+    shapes = shapely_polygons(polygons)
+    triangulate = pear.triangulate
+
+    def loop():
+        for c, e in polygons:
+            triangulate(c, e, strict=False)
+
+    def shapely_batch(threads, geos):
+        def run():
+            pear._many._read_geos_handles = geos
+            try:
+                pear.triangulate_many(shapes, threads=threads)
+            finally:
+                pear._many._read_geos_handles = True
+        return run
+
+    def ragged_batch(threads):
+        return lambda: pear.triangulate_many(coords, rings, first_ring, threads=threads)
+
+    return {"per-polygon loop (numpy arrays)": loop,
+            "triangulate_many(shapely), WKB, 1 thread": shapely_batch(1, geos=False),
+            "triangulate_many(shapely), GEOS, 1 thread": shapely_batch(1, geos=True),
+            "triangulate_many(shapely), GEOS, 2 threads": shapely_batch(2, geos=True),
+            "triangulate_many(ragged), 1 thread": ragged_batch(1),
+            "triangulate_many(ragged), 2 threads": ragged_batch(2)}
+
+
+def uptime():
+    return subprocess.run(["uptime"], capture_output=True, text=True).stdout.strip()
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--build", default=str(ROOT / "build"))
+    parser.add_argument("--rounds", type=int, default=11)
+    parser.add_argument("--folder", default="counties")
+    args = parser.parse_args()
+    sys.path.insert(0, os.path.join(args.build, "python"))
+    import pear
+    print(f"pear from {os.path.dirname(pear.__file__)}; GEOS reader: "
+          f"{pear._many._geos_reader() is not None}; {os.cpu_count()} CPUs")
+    print(f"uptime before: {uptime()}")
+    polygons = load(args.folder)
+    runs = candidates(pear, polygons)
+    reference = "per-polygon loop (numpy arrays)"
+    medians, cpu, ratios = measure(runs, args.rounds, reference)
+    vertices = sum(len(c) for c, _ in polygons)
+    print(f"\n{args.folder}: {len(polygons)} polygons, {vertices} vertices, median of "
+          f"{args.rounds} rounds\n")
+    print("| candidate | ms per pass | us per polygon | loop time / its time (median of rounds) "
+          "| CPU ms |")
+    print("|---|---|---|---|---|")
+    for name, seconds in medians.items():
+        print(f"| {name} | {seconds * 1e3:.2f} | {seconds / len(polygons) * 1e6:.2f} "
+              f"| {ratios[name]:.2f}x | {cpu[name] * 1e3:.2f} |")
+    wkb = medians["triangulate_many(shapely), WKB, 1 thread"]
+    geos = medians["triangulate_many(shapely), GEOS, 1 thread"]
+    print(f"\nGEOS against WKB (1 thread): {wkb / geos:.2f}x; GEOS 2 threads against 1: "
+          f"{geos / medians['triangulate_many(shapely), GEOS, 2 threads']:.2f}x")
+    print(f"uptime after: {uptime()}")
+
+
+if __name__ == "__main__":
+    main()
