@@ -113,12 +113,15 @@ PEAR_API std::vector<Polygon> read_hex_wkb(std::string_view text,
 /// more. Point i is (coordinates[2i], coordinates[2i+1]); ring r is points [ring_offsets[r],
 /// ring_offsets[r+1]); polygon p is rings [polygon_offsets[p], polygon_offsets[p+1]); geometry
 /// g is polygons [geometry_offsets[g], geometry_offsets[g+1]). As constructed: no geometries,
-/// each offset array holding its leading 0.
+/// each offset array holding its leading 0. With keep_z, read_wkb also gives point i's z in z[i]
+/// (NaN for a value without Z), for triangles whose points keep their height.
 struct PolygonArrays {
   std::vector<double> coordinates;
   std::vector<std::int64_t> ring_offsets{0};
   std::vector<std::int64_t> polygon_offsets{0};
   std::vector<std::int64_t> geometry_offsets{0};
+  bool keep_z = false;
+  std::vector<double> z;
 };
 
 /// Appends one WKB value to `out` as its next geometry, for many geometries without a Polygon

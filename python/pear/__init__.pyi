@@ -54,7 +54,7 @@ class BatchResult:
     def geometry_triangles(self) -> List[_Triangles]: ...
     def check(self) -> BatchResult: ...
 
-# data: an (N, 2) array with ring_offsets and polygon_offsets, or an iterable of shapely
+# data: an (N, 2) or (N, 3) array with ring_offsets and polygon_offsets, or an iterable of shapely
 # geometries, WKB bytes or None (a GeoSeries among them).
 def triangulate_many(data: Union[ArrayLike, Iterable[Any]], ring_offsets: Optional[ArrayLike] = None,
                      polygon_offsets: Optional[ArrayLike] = None,

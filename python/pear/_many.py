@@ -9,8 +9,8 @@ class BatchResult:
     """The triangulations of a batch, as flat arrays (triangulate_many returns one).
 
     coordinates      (N, 2) float64: the points the triangles index (the caller's array for
-                     ragged input; for WKB and shapely input, every geometry's coordinates in
-                     shapely's order, rings closed)
+                     ragged input, (N, 3) when it has z; for WKB and shapely input, every
+                     geometry's x and y in shapely's order, rings closed)
     ring_offsets, polygon_offsets, geometry_offsets
                      the layout of those points (int64): ring r is points [ring_offsets[r],
                      ring_offsets[r+1]), polygon p rings [polygon_offsets[p], ...), input
@@ -202,7 +202,7 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
     scheduler, the GIL released; returns a BatchResult. Never raises for bad geometry: each
     polygon has a status (BatchResult.check() raises as triangulate would).
 
-    data: an (N, 2) float64 array with integer ring_offsets and polygon_offsets (shapely 2's
+    data: an (N, 2) float64 array (or (N, 3): z kept, x and y triangulated) with integer ring_offsets and polygon_offsets (shapely 2's
     to_ragged_array layout: ``triangulate_many(coords, *offsets)``; geometry_offsets for
     MultiPolygons); or a sequence of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or
     MultiPolygon, any byte order, ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.

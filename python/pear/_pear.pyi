@@ -81,7 +81,7 @@ class BatchArrays:
     @property
     def delaunay_flips(self) -> int: ...
 
-# coords: an (N, 2) array-like or a shapely Polygon/MultiPolygon (any object with .wkb).
+# coords: an (N, 2) or (N, 3) (z kept) array-like or a shapely Polygon/MultiPolygon (any object with .wkb).
 @overload
 def triangulate(coords: Any, ring_ends: Optional[ArrayLike] = None, *,
                 algorithm: _AlgorithmName = "automatic", heuristic: _HeuristicName = "top",

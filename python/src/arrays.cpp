@@ -178,15 +178,38 @@ Coordinates as_real_array(py::handle value, const char* name) {
   return Coordinates::ensure(array);
 }
 
-Coordinates as_coordinates(py::handle coords, const char* name) {
+namespace {
+Coordinates coordinates_of_width(py::handle coords, const char* name, py::ssize_t widest) {
   Coordinates array = as_real_array(coords, name);
-  if (array.ndim() != 2 || array.shape(1) != 2) {
+  if (array.ndim() != 2 || array.shape(1) < 2 || array.shape(1) > widest) {
     std::string shape;
     for (py::ssize_t d = 0; d < array.ndim(); ++d)
       shape += (d ? ", " : "") + std::to_string(array.shape(d));
-    throw py::value_error(std::string(name) + " must have shape (N, 2), not (" + shape + ")");
+    throw py::value_error(std::string(name) + " must have shape (N, 2)" +
+                          (widest == 3 ? " or (N, 3)" : "") + ", not (" + shape + ")");
   }
   return array;
+}
+}  // namespace
+
+Coordinates as_coordinates(py::handle coords, const char* name) {
+  return coordinates_of_width(coords, name, 2);
+}
+
+Coordinates as_coordinates_with_z(py::handle coords, const char* name) {
+  return coordinates_of_width(coords, name, 3);
+}
+
+std::span<const double> xy_of(const Coordinates& array, std::vector<double>& xy) {
+  const auto n = static_cast<std::size_t>(array.shape(0));
+  const auto width = static_cast<std::size_t>(array.shape(1));
+  if (width == 2) return {array.data(), 2 * n};
+  xy.resize(2 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xy[2 * i] = array.data()[width * i];
+    xy[2 * i + 1] = array.data()[width * i + 1];
+  }
+  return xy;
 }
 
 Integers as_integers(py::handle value, const char* name) {
@@ -356,10 +379,11 @@ bool is_geometry(py::handle value) {
   return !py::isinstance<py::array>(value) && py::hasattr(py::type::handle_of(value), "wkb");
 }
 
-FlatPolygons geometry_polygons(py::handle geometry) {
+FlatPolygons geometry_polygons(py::handle geometry, bool keep_z) {
   const py::bytes wkb = geometry.attr("wkb");
   const std::string_view bytes = wkb;
   FlatPolygons flat;
+  flat.keep_z = keep_z && py::hasattr(geometry, "has_z") && geometry.attr("has_z").cast<bool>();
   try {
     io::read_wkb(std::as_bytes(std::span(bytes.data(), bytes.size())), flat);
   } catch (const io::ParseError& e) {
@@ -431,6 +455,20 @@ py::array points_array(std::vector<double>&& xy) {
   auto* owned = new std::vector<double>(std::move(xy));
   py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
   return py::array_t<double>({points, py::ssize_t{2}}, owned->data(), owner);
+}
+
+py::array points_array(FlatPolygons&& flat) {
+  if (flat.z.empty()) return points_array(std::move(flat.coordinates));
+  const std::size_t n = flat.z.size();
+  std::vector<double> xyz(3 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    xyz[3 * i] = flat.coordinates[2 * i];
+    xyz[3 * i + 1] = flat.coordinates[2 * i + 1];
+    xyz[3 * i + 2] = flat.z[i];
+  }
+  auto* owned = new std::vector<double>(std::move(xyz));
+  py::capsule owner(owned, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{3}}, owned->data(), owner);
 }
 
 py::tuple flat_arrays(FlatPolygons&& flat) {

@@ -49,6 +49,11 @@ using Integers = py::array_t<std::int64_t, py::array::c_style | py::array::force
 Coordinates as_real_array(py::handle value, const char* name);
 /// as_real_array, then shape (N, 2) or ValueError.
 Coordinates as_coordinates(py::handle coords, const char* name = "coords");
+/// as_real_array, then shape (N, 2) or (N, 3) (x, y, z: triangulated on x and y) or ValueError.
+Coordinates as_coordinates_with_z(py::handle coords, const char* name = "coords");
+/// x and y of an (N, 2) or (N, 3) array, interleaved: the array's own memory for (N, 2), else
+/// a copy in `xy` (which keeps it).
+std::span<const double> xy_of(const Coordinates& array, std::vector<double>& xy);
 
 /// `value` as a C-contiguous int64 array of any shape (not 0-d): an integer dtype only (floats,
 /// even 4.0, and bool raise TypeError, as numpy's indexing does); values int64 cannot hold
@@ -80,6 +85,8 @@ template <class T>
 py::array vector_array(std::vector<T>&& values);
 /// Interleaved coordinates x0, y0, x1, y1, ... moved into an (N, 2) float64 array (no copy).
 py::array points_array(std::vector<double>&& xy);
+/// The points of flat polygons: (N, 2), or (N, 3) with their z when flat.z has them.
+py::array points_array(FlatPolygons&& flat);
 /// (M, 3) uint32 triangles from any array-like, checked against `points` (indices in range).
 std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points);
 
@@ -93,8 +100,9 @@ std::vector<Triangle> triangles_from(py::handle triangles, std::size_t points);
 /// Whether `value` is a shapely geometry (its type has a `wkb` attribute; not an array).
 bool is_geometry(py::handle value);
 /// A shapely Polygon or MultiPolygon's polygons, read from its WKB: points in shapely's order
-/// (every ring closed), so indices into them are indices into its coordinates.
-FlatPolygons geometry_polygons(py::handle geometry);
+/// (every ring closed), so indices into them are indices into its coordinates. keep_z: their z
+/// too, when the geometry has z (shapely's has_z).
+FlatPolygons geometry_polygons(py::handle geometry, bool keep_z = false);
 /// Reads sequence[i] as WKB (bytes, bytearray or None) for every i, the GIL released while
 /// parsing; a ParseError becomes pear.WKBError naming i and the byte.
 FlatPolygons read_wkb_sequence(py::handle sequence);

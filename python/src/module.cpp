@@ -23,6 +23,7 @@ constexpr std::size_t release_gil_points = 256;
 struct Scratch {
   Triangulator triangulator;
   std::vector<std::uint32_t> ring_offsets;
+  std::vector<double> xy;  // x and y of (N, 3) coordinates
   Triangulation<> result;
 };
 Scratch& thread_scratch() {
@@ -62,7 +63,7 @@ py::object finish(Triangulation<>& result, bool strict, const py::object& points
 /// that has it names the place). with_points: those coordinates come back too.
 py::object triangulate_geometry(py::handle geometry, const Options& options, bool strict,
                                 bool with_points) {
-  FlatPolygons flat = geometry_polygons(geometry);
+  FlatPolygons flat = geometry_polygons(geometry, with_points);
   const std::size_t parts = flat.polygon_offsets.size() - 1;
   Scratch& s = thread_scratch();
   if (parts == 0) {  // an empty geometry: what empty coordinates give (empty_input)
@@ -74,8 +75,7 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
     s.ring_offsets.assign(flat.ring_offsets.begin(), flat.ring_offsets.end());
     const CoordinateView view{flat.coordinates, s.ring_offsets};
     Triangulation<>& one = run(s, view, options);
-    const py::object points =
-        with_points ? points_array(std::move(flat.coordinates)) : py::object();
+    const py::object points = with_points ? points_array(std::move(flat)) : py::object();
     return finish(one, strict, points);
   }
   const PolygonBatch batch{flat.coordinates, flat.ring_offsets, flat.polygon_offsets};
@@ -97,7 +97,7 @@ py::object triangulate_geometry(py::handle geometry, const Options& options, boo
                            result.diagnostics.begin() + result.diagnostic_offsets[worst + 1]);
     if (parts > 1) where = "polygon " + std::to_string(worst) + " of the MultiPolygon, ";
   }
-  const py::object points = with_points ? points_array(std::move(flat.coordinates)) : py::object();
+  const py::object points = with_points ? points_array(std::move(flat)) : py::object();
   return finish(all, strict, points, where);
 }
 
@@ -108,14 +108,14 @@ py::object triangulate(py::handle coords, py::handle ring_ends, const Options& o
       throw py::type_error("ring_ends goes with coordinates, not with a shapely geometry");
     return triangulate_geometry(coords, options, strict, with_points);
   }
-  const Coordinates array = as_coordinates(coords);
+  const Coordinates array = as_coordinates_with_z(coords);
   const auto n = static_cast<std::size_t>(array.shape(0));
   if (n > std::size_t{0xFFFFFFFF})
     throw py::value_error(std::to_string(n) + " points cannot be numbered by uint32 indices");
   Scratch& s = thread_scratch();
   ring_offsets_from(ring_ends, n, s.ring_offsets);
-  return finish(run(s, CoordinateView{std::span(array.data(), 2 * n), s.ring_offsets}, options),
-                strict, with_points ? py::object(array) : py::object());
+  return finish(run(s, CoordinateView{xy_of(array, s.xy), s.ring_offsets}, options), strict,
+                with_points ? py::object(array) : py::object());
 }
 
 /// triangulate's arguments, as pear.triangulate's signature names them (and
@@ -191,7 +191,8 @@ PyMethodDef triangulate_definition = {
     "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
     "Triangulates one polygon; returns an (M, 3) uint32 array of indices into coords.\n\n"
     "coords: an (N, 2) array-like of real numbers (a C-contiguous float64 array is not\n"
-    "converted), or a shapely Polygon/MultiPolygon (indices then number its coordinates, rings\n"
+    "converted), (N, 3) with z (triangulated on x and y), or a shapely Polygon/MultiPolygon "
+    "(indices then number its coordinates, rings\n"
     "closed, in shapely's order: pear.triangulate_points returns them with the triangles).\n"
     "ring_ends: None (one ring), integer ring offsets [0, ..., N], earcut's ring ends [..., N]\n"
     "or earcut's hole indices. Raises pear.InvalidInputError (a ValueError) naming ring and\n"
@@ -207,7 +208,8 @@ PyMethodDef triangulate_points_definition = {
     "triangulate_points(coords, ring_ends=None, *, algorithm='automatic', heuristic='top', "
     "delaunay=False, threads=0, partitions=0, check_simplicity=True, strict=True)\n--\n\n"
     "pear.triangulate, returning (points, triangles): points the (N, 2) float64 coordinates\n"
-    "the triangles index (for a shapely Polygon/MultiPolygon its coordinates in shapely's\n"
+    "the triangles index, (N, 3) with z where the input has z (for a shapely Polygon/MultiPolygon "
+    "its coordinates in shapely's\n"
     "order, every ring closed; for an array, coords as read), triangles the (M, 3) uint32\n"
     "array. strict=False returns (points, triangles, pear.Status). Arguments and exceptions\n"
     "as for triangulate. pear.shapely_triangles(points, triangles) makes shapely Polygons of\n"
@@ -229,7 +231,8 @@ BatchArrays triangulate_batch(py::handle coords, py::handle ring_offsets,
       throw py::type_error("triangulate_batch() got an unexpected keyword argument '" +
                            std::string(py::str(name)) + "'");
   const Options options = make_options(arguments);
-  const Coordinates points = as_coordinates(coords);
+  const Coordinates points = as_coordinates_with_z(coords);
+  std::vector<double> xy;  // x and y of (N, 3) coordinates
   // The offsets decide which addresses are read: they are copied while the GIL is held, so
   // that another thread writing the caller's arrays cannot change one between its check and
   // its use (issue 30). Coordinates are only values: read in place, the GIL released.
@@ -239,8 +242,7 @@ BatchArrays triangulate_batch(py::handle coords, py::handle ring_offsets,
   };
   const std::vector<std::int64_t> rings = offsets(ring_offsets, "ring_offsets");
   const std::vector<std::int64_t> polygons = offsets(polygon_offsets, "polygon_offsets");
-  const PolygonBatch batch{std::span(points.data(), static_cast<std::size_t>(2 * points.shape(0))),
-                           rings, polygons};
+  const PolygonBatch batch{xy_of(points, xy), rings, polygons};
   BatchTriangulation<> result;
   std::vector<std::uint8_t> status, issues;
   std::vector<std::int64_t> diagnostic_rings, diagnostic_vertices;

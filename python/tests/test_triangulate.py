@@ -69,7 +69,7 @@ def test_contiguous_float64_is_read_in_place():
     assert np.array_equal(coords, SQUARE_WITH_HOLE)
 
 
-@pytest.mark.parametrize("coords, error", [(np.zeros((4, 3)), "shape \\(N, 2\\)"),
+@pytest.mark.parametrize("coords, error", [(np.zeros((4, 4)), "shape \\(N, 2\\)"),
                                            (np.zeros(8), "shape \\(N, 2\\)")])
 def test_wrong_shapes_raise_value_error(coords, error):
     with pytest.raises(ValueError, match=error):

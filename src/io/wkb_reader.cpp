@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -109,12 +110,14 @@ struct RingBytes {
   std::uint32_t count;
   std::size_t stride;  ///< bytes a point: 16, 24 or 32
   bool swap;
+  bool has_z;  ///< z follows x and y
 };
 
 /// A geometry header: byte order, type (with its ordinates) and an EWKB SRID, which is skipped.
 struct Header {
   std::uint32_t base_type;
   std::uint32_t dimensions;
+  bool has_z;
 };
 
 Header read_header(Cursor& cursor) {
@@ -132,24 +135,24 @@ Header read_header(Cursor& cursor) {
   if (iso != wkb_polygon && iso != wkb_multipolygon && iso != wkb_collection)
     cursor.fail(type_offset, "geometry type " + std::to_string(code) +
                                  " is not a Polygon (3) or MultiPolygon (6)");
-  return {iso, 2u + (has_z ? 1u : 0u) + (has_m ? 1u : 0u)};
+  return {iso, 2u + (has_z ? 1u : 0u) + (has_m ? 1u : 0u), has_z};
 }
 
 /// A polygon's body (after its header): sink.ring for each ring, then sink.end_polygon unless
 /// it has none.
 template <class Sink>
-void read_polygon_body(Cursor& cursor, std::uint32_t dimensions, Sink& sink) {
+void read_polygon_body(Cursor& cursor, const Header& header, Sink& sink) {
   const std::size_t count_offset = cursor.offset();
   const std::uint32_t rings = cursor.read_uint32("a ring count");
   if (rings > cursor.left() / 4)
     cursor.fail(count_offset, std::to_string(rings) + " rings cannot fit in the " +
                                   std::to_string(cursor.left()) + " bytes left");
-  const std::size_t stride = 8 * std::size_t{dimensions};
+  const std::size_t stride = 8 * std::size_t{header.dimensions};
   for (std::uint32_t r = 0; r < rings; ++r) {
     const std::size_t ring_offset = cursor.offset();
     const std::uint32_t points = cursor.read_uint32("a point count");
     const std::byte* at = cursor.take_points(points, stride);
-    sink.ring(RingBytes{ring_offset, at, points, stride, cursor.swapped()});
+    sink.ring(RingBytes{ring_offset, at, points, stride, cursor.swapped(), header.has_z});
   }
   if (rings > 0) sink.end_polygon();
 }
@@ -166,7 +169,7 @@ void read_multipolygon_body(Cursor& cursor, Sink& sink) {
     const Header part = read_header(cursor);
     if (part.base_type != wkb_polygon)
       cursor.fail(part_offset, "a MultiPolygon's part " + std::to_string(p) + " is not a Polygon");
-    read_polygon_body(cursor, part.dimensions, sink);
+    read_polygon_body(cursor, part, sink);
   }
 }
 
@@ -176,7 +179,7 @@ void read_value(std::span<const std::byte> bytes, Sink& sink) {
   Cursor cursor(bytes);
   const Header header = read_header(cursor);
   if (header.base_type == wkb_polygon) {
-    read_polygon_body(cursor, header.dimensions, sink);
+    read_polygon_body(cursor, header, sink);
   } else if (header.base_type == wkb_multipolygon) {
     read_multipolygon_body(cursor, sink);
   } else {
@@ -202,7 +205,20 @@ struct ArraysSink {
       xy.push_back(p.x);
       xy.push_back(p.y);
     }
+    if (out.keep_z) keep_z(ring);
     out.ring_offsets.push_back(static_cast<std::int64_t>(xy.size() / 2));
+  }
+  void keep_z(const RingBytes& ring) {
+    const std::byte* from = ring.points + 16;
+    for (std::uint32_t i = 0; i < ring.count; ++i, from += ring.stride) {
+      if (!ring.has_z) {
+        out.z.push_back(std::numeric_limits<double>::quiet_NaN());
+        continue;
+      }
+      std::uint64_t bits;
+      std::memcpy(&bits, from, 8);
+      out.z.push_back(std::bit_cast<double>(ring.swap ? swap_bytes(bits) : bits));
+    }
   }
   void end_polygon() {
     out.polygon_offsets.push_back(static_cast<std::int64_t>(out.ring_offsets.size() - 1));
@@ -300,6 +316,7 @@ void read_wkb(std::span<const std::byte> wkb, PolygonArrays& out, std::string_vi
       out.coordinates.resize(points);
       out.ring_offsets.resize(rings);
       out.polygon_offsets.resize(polygons);
+      if (out.keep_z) out.z.resize(points / 2);
       throw binary_error(name, fault);
     }
   }
