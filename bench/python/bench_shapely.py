@@ -69,7 +69,7 @@ def main():
     sys.path.insert(0, os.path.join(args.build, "python"))
     import pear
     print(f"pear from {os.path.dirname(pear.__file__)}; GEOS reader: "
-          f"{pear._many._geos_reader() is not None}; {os.cpu_count()} CPUs")
+          f"{pear._many._reads_geos_handles()}; {os.cpu_count()} CPUs")
     print(f"uptime before: {uptime()}")
     polygons = load(args.folder)
     runs = candidates(pear, polygons)

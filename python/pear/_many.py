@@ -144,18 +144,10 @@ def _vectorised_wkb(geometries):
 _read_geos_handles = True
 
 
-def _geos_reader():
-    """shapely 1.8's libgeos_c (its dlopen handle) and geometry base class, or None: shapely 2
-    has no handles to read (to_wkb is vectorised), a module built without geos_c.h no reader."""
-    if not (_read_geos_handles and _pear.has_geos_reader):
-        return None
-    try:
-        from shapely.geos import lgeos  # shapely 1.8 (2.0 has no shapely.geos.lgeos)
-        from shapely.geometry.base import BaseGeometry
-        library = lgeos._lgeos._handle
-    except (ImportError, AttributeError):
-        return None
-    return (library, BaseGeometry) if isinstance(library, int) and library else None
+def _reads_geos_handles():
+    """Whether shapely geometries are read through GEOS here: shapely 1.8 and a module built
+    with geos_c.h (the tests and the benchmark ask)."""
+    return bool(_pear.has_geos_reader) and _pear.read_geos([]) is not None
 
 
 def _as_sequence(geometries):
@@ -183,9 +175,10 @@ def _read_geometries(geometries):
     first = next((v for v in geometries if v is not None), None)
     if first is None or isinstance(first, (bytes, bytearray)):
         return _pear.read_wkb(geometries)
-    reader = _geos_reader()
-    if reader is not None:
-        flat = _pear.read_geos(geometries, *reader)
+    # shapely 1.8: the module finds shapely's libgeos_c itself (None for shapely 2, whose
+    # to_wkb is vectorised, or a module built without geos_c.h).
+    if _read_geos_handles and _pear.has_geos_reader:
+        flat = _pear.read_geos(geometries)
         if flat is not None:
             return flat
     vectorised = _vectorised_wkb(geometries)

@@ -122,7 +122,7 @@ std::string triangles_to_wkb(std::span<const double> coordinates,
 /// instead: an element that is not a `geometry_type` with a handle, a geometry that is not a
 /// Polygon, MultiPolygon or empty collection, a GEOS before 3.10, a module built without
 /// geos_c.h. `library`: the dlopen handle of shapely's libgeos_c (its ctypes CDLL's _handle).
-py::object read_geos(py::handle sequence, std::uintptr_t library, py::handle geometry_type);
+py::object read_geos(py::handle sequence);
 /// Whether the module was built with geos.cpp's reader.
 bool has_geos_reader();
 

@@ -163,18 +163,43 @@ std::optional<std::vector<const GEOSGeometry*>> handles(py::handle sequence,
   return out;
 }
 
+/// shapely 1.8's libgeos_c (the dlopen handle its ctypes loader holds) and its geometry base
+/// class, looked up here rather than taken from the caller: an address passed in could point
+/// anywhere. Nothing for shapely 2 (no shapely.geos.lgeos) or without shapely.
+struct Shapely {
+  void* library = nullptr;
+  py::object geometry_type;
+};
+
+std::optional<Shapely> find_shapely() {
+  try {
+    const py::object lgeos = py::module_::import("shapely.geos").attr("lgeos");
+    const py::object handle = lgeos.attr("_lgeos").attr("_handle");
+    void* library = PyLong_Check(handle.ptr()) ? PyLong_AsVoidPtr(handle.ptr()) : nullptr;
+    if (!library) {
+      PyErr_Clear();
+      return std::nullopt;
+    }
+    return Shapely{library, py::module_::import("shapely.geometry.base").attr("BaseGeometry")};
+  } catch (const py::error_already_set&) {
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
-py::object read_geos(py::handle sequence, std::uintptr_t library, py::handle geometry_type) {
-  // Resolved once for the library first asked for; another library (not expected: shapely
-  // loads one) is resolved at each call.
-  static const std::uintptr_t first_library = library;
-  static const std::optional<GeosApi> first_api = resolve(reinterpret_cast<void*>(library));
+py::object read_geos(py::handle sequence) {
+  const std::optional<Shapely> shapely = find_shapely();
+  if (!shapely) return py::none();
+  // Resolved once for the library first found; another library (not expected: shapely loads
+  // one) is resolved at each call.
+  static void* const first_library = shapely->library;
+  static const std::optional<GeosApi> first_api = resolve(first_library);
   const std::optional<GeosApi> api =
-      library == first_library ? first_api : resolve(reinterpret_cast<void*>(library));
+      shapely->library == first_library ? first_api : resolve(shapely->library);
   if (!api) return py::none();
   std::vector<py::object> held;
-  const auto geometries = handles(sequence, geometry_type, held);
+  const auto geometries = handles(sequence, shapely->geometry_type, held);
   if (!geometries) return py::none();
   FlatPolygons flat;
   bool read = true;
@@ -198,7 +223,7 @@ bool has_geos_reader() {
 #else  // no geos_c.h at build time: pear._many writes WKB
 
 namespace pear::python {
-py::object read_geos(py::handle, std::uintptr_t, py::handle) {
+py::object read_geos(py::handle) {
   return py::none();
 }
 bool has_geos_reader() {

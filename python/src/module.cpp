@@ -355,10 +355,10 @@ void bind_functions(py::module_& m) {
       "read_wkb(values)\n--\n\n"
       "WKB values (bytes or None) to (coords, ring_offsets, polygon_offsets, "
       "geometry_offsets); raises pear.WKBError naming the geometry and the byte.");
-  m.def("read_geos", &read_geos, py::arg("values"), py::arg("library"), py::arg("geometry_type"),
-        "read_geos(values, library, geometry_type)\n--\n\n"
-        "shapely 1.8 geometries read by GEOS (their _geom) to read_wkb's arrays, or None: "
-        "then write WKB. library: the address dlopen gave for shapely's libgeos_c.");
+  m.def("read_geos", &read_geos, py::arg("values"),
+        "read_geos(values)\n--\n\n"
+        "shapely 1.8 geometries read by GEOS (their _geom, in the libgeos_c shapely loaded) "
+        "to read_wkb's arrays, or None: then write WKB.");
   m.attr("has_geos_reader") = has_geos_reader();
   m.def("triangles_wkb", &triangles_wkb, py::arg("coords"), py::arg("triangles"),
         "triangles_wkb(coords, triangles)\n--\n\nEach triangle as WKB Polygon bytes.");

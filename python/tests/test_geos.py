@@ -9,7 +9,7 @@ from polygons import SQUARE_WITH_HOLE, counties_frame
 
 geometry = pytest.importorskip("shapely.geometry")
 wkt = pytest.importorskip("shapely.wkt")
-if pear._many._geos_reader() is None:
+if not pear._many._reads_geos_handles():
     pytest.skip("no GEOS reader: shapely 2, or the module was built without geos_c.h",
                 allow_module_level=True)
 
@@ -27,7 +27,7 @@ def through_wkb(data, **options):
 
 def read_by_geos(data):
     """The module's reading of data, None where it leaves it to WKB."""
-    return pear._pear.read_geos(data, *pear._many._geos_reader())
+    return pear._pear.read_geos(data)
 
 
 def assert_same(data):
