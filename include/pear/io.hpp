@@ -177,11 +177,23 @@ PEAR_API void write_node_ele(std::ostream& node, std::ostream& ele,
                              std::span<const TriangulatedPolygon> polygons);
 
 struct SvgOptions {
-  double size = 1000;      ///< the longer side of the picture, in pixels
+  double size = 1000;      ///< the longer side of the picture, in pixels (1 to 1e6)
   bool draw_edges = true;  ///< draw triangle edges (thin, scaled to the triangle density)
-  std::string title = {};  ///< shown in the picture's corner when not empty
+  std::string title = {};  ///< shown in a band under the picture when not empty
 };
-/// A picture of the polygons (holes visible) and their triangles, y up, fitted to the viewport.
+/// The most points one <path> of write_svg holds (about 40 kB of path data).
+inline constexpr std::size_t svg_path_points_max = 4096;
+/// A picture of the polygons (holes visible) and their triangles, y up: the polygons' bounding
+/// box is scaled to `size` pixels on its longer side, with a margin of 2% of `size` all round.
+/// Layers: the polygons filled (even-odd, so holes stay open), the triangles coloured by `part`,
+/// the rings outlined, the title. Coordinates are rounded to 1/10 pixel (so the picture holds
+/// its detail up to a zoom of about 10) and a triangle that covers no area on that grid is left
+/// out. Large inputs stay drawable: each <path> holds at most svg_path_points_max points, so no
+/// attribute comes near libxml2's 10 MB limit (rsvg-convert, Inkscape); long rings are outlined
+/// in runs, and the fill is cut into tiles along whole pixels. Eurasia's 1.5 million vertices
+/// make a file of about 8 MB that rsvg-convert and Chromium draw in a few seconds.
+/// Throws std::invalid_argument for a non-finite point, a triangle index past the points or a
+/// size out of range.
 PEAR_API void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
                         const SvgOptions& options = {});
 
