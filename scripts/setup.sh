@@ -8,6 +8,9 @@ if [[ "${1:-}" != minimal ]]; then
              libglu1-mesa-dev python3-matplotlib
              clang clang-format libclang-rt-14-dev   # clang's libFuzzer and sanitizer runtimes
              cmake                                   # tests/cmake_consumer: find_package(pear)
+             # tests/cli/test_svg_render.py: the CLI's SVG drawn by real renderers, read by Pillow
+             librsvg2-bin python3-pil
+             chromium                                # ~90 MB download, ~20 s to unpack: 'large' only
              # the Python package (python/) and its tests: shapely, geopandas, Dask, earcut
              python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
              python3-shapely python3-geopandas python3-dask python3-distributed

@@ -2,8 +2,9 @@
 
 The shared corpus is PEAR_SHARED_CORPUS, else ../shared/corpus beside the source tree; the bundled
 one PEAR_CORPUS, else the source tree's corpus/. Each folder's MANIFEST.tsv is read by its header.
-A test whose data is absent raises unittest.SkipTest through require(); main() runs the tests
-and exits 77 (meson's SKIP) when every test that ran was skipped that way.
+A test whose data is absent raises unittest.SkipTest through require() (or with MISSING_TOOL for
+a missing program); main() runs the tests and exits 77 (meson's SKIP) when every test that ran
+was skipped that way.
 """
 import dataclasses
 import os
@@ -13,6 +14,7 @@ import unittest
 
 REPO = pathlib.Path(__file__).resolve().parents[2]
 MISSING_DATA = "missing data: "
+MISSING_TOOL = "missing tool: "  # a renderer or module a test needs; skips like missing data
 DEFECTS = ("GEOS:", "NOT SIMPLE", "DEGENERATE")
 
 
@@ -63,7 +65,8 @@ def require(*paths):
 def main():
     """unittest.main, but exit status 77 when every test that ran skipped for missing data."""
     result = unittest.main(verbosity=2, exit=False).result
-    missing = [test for test, reason in result.skipped if reason.startswith(MISSING_DATA)]
+    missing = [test for test, reason in result.skipped
+               if reason.startswith((MISSING_DATA, MISSING_TOOL))]
     if result.wasSuccessful() and result.testsRun > 0 and len(missing) == result.testsRun:
         sys.exit(77)
     sys.exit(0 if result.wasSuccessful() else 1)
