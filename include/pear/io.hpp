@@ -13,7 +13,8 @@
 // the i-th distinct input point (ring after ring), as pear::triangulate numbers them.
 //
 // Writers print every coordinate in the shortest decimal form that reads back to the same double
-// (std::to_chars), so a written file reads back bit-identical.
+// (std::to_chars), so a written file reads back bit-identical; the SVG picture alone rounds to
+// its pixels.
 #pragma once
 
 #include <array>
