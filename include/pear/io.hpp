@@ -190,9 +190,11 @@ inline constexpr std::size_t svg_path_points_max = 4096;
 /// the rings outlined, the title. Coordinates are rounded to 1/10 pixel (so the picture holds
 /// its detail up to a zoom of about 10) and a triangle that covers no area on that grid is left
 /// out. Large inputs stay drawable: each <path> holds at most svg_path_points_max points, so no
-/// attribute comes near libxml2's 10 MB limit (rsvg-convert, Inkscape); long rings are outlined
-/// in runs, and the fill is cut into tiles along whole pixels. Eurasia's 1.5 million vertices
-/// make a file of about 8 MB that rsvg-convert and Chromium draw in a few seconds.
+/// attribute comes near libxml2's 10 MB limit (rsvg-convert); long rings are outlined in runs,
+/// and the fill is cut into tiles along whole pixels (only a one-pixel tile that still holds
+/// more, which takes rings folding back and forth inside one pixel, is kept whole). Eurasia's
+/// 1.5 million vertices make a file of about 8 MB that rsvg-convert and Chromium draw in a few
+/// seconds.
 /// Throws std::invalid_argument for a non-finite point, a triangle index past the points or a
 /// size out of range.
 PEAR_API void write_svg(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
