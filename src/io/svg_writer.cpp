@@ -202,10 +202,8 @@ GridPoint crossing(GridPoint a, GridPoint b, int axis, std::int64_t cut) {
 /// Sutherland-Hodgman against one half-plane: inside it, the clipped ring winds around every
 /// point as the ring did, so the even-odd fill of a tile is the fill's part in that tile.
 Tile clip(const Tile& tile, int axis, std::int64_t cut, bool keep_low) {
-  Tile half = tile;
+  Tile half{tile.low, tile.high, {}, 0};
   (axis == 0 ? (keep_low ? half.high.x : half.low.x) : (keep_low ? half.high.y : half.low.y)) = cut;
-  half.rings.clear();
-  half.points = 0;
   const auto inside = [&](GridPoint p) {
     const std::int64_t v = axis == 0 ? p.x : p.y;
     return keep_low ? v <= cut : v >= cut;
