@@ -2,7 +2,8 @@
 // dictionary readers.dict). Each read either throws ParseError with a position inside the text,
 // or returns polygons that survive a round trip: written in the same format and read back, they
 // are bit-identical (GeoJSON, WKT), or hold the same points (.poly, whose reader regroups rings
-// by nesting). Any other exception escapes and is a crash.
+// by nesting); read_features gives the same polygons with z and m one per vertex. Any other
+// exception escapes and is a crash.
 #include <algorithm>
 #include <bit>
 #include <cstddef>
@@ -85,6 +86,30 @@ void check_round_trip(const std::vector<pear::Polygon>& polygons, Format format,
                   text);
 }
 
+/// read_features on the same text: the same polygons where the strict read found no other
+/// geometry, z and m one per vertex or none.
+void check_features(std::string_view text, Format format, const pear::io::ReadOptions& options,
+                    const std::vector<pear::Polygon>& polygons) {
+  pear::io::ReadResult result;
+  try {
+    result = pear::io::read_features(text, format, "fuzz", options);
+  } catch (const pear::io::ParseError& error) {  // partial z, a second SRID: documented
+    fuzz::require(error.line() >= 1 && error.offset() <= text.size(),
+                  "ParseError points outside the text", error.what());
+    return;
+  }
+  std::vector<pear::Polygon> again;
+  for (const pear::io::Feature& feature : result.features) {
+    std::size_t vertices = 0;
+    for (const pear::Ring& ring : feature.polygon) vertices += ring.size();
+    fuzz::require(feature.z.empty() || feature.z.size() == vertices, "z not one per vertex", "");
+    fuzz::require(feature.m.empty() || feature.m.size() == vertices, "m not one per vertex", "");
+    again.push_back(feature.polygon);
+  }
+  fuzz::require(fingerprint(again) == fingerprint(polygons),
+                "read_features and read_text give other polygons", std::string(text));
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
@@ -102,6 +127,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                   "ParseError points outside the text", error.what());
     return 0;
   }
+  check_features(text, format, options, polygons);
   check_round_trip(polygons, format, options);
   return 0;
 }

@@ -68,15 +68,17 @@ struct ReadOptions {
 /// GeoJSON Polygon, MultiPolygon, Feature, FeatureCollection, GeometryCollection (nested), or a
 /// bare array of rings `[[[x,y],...],...]` / array of such polygons. Each Polygon is one entry;
 /// an empty Polygon and a Feature with a null geometry give none. Positions may carry a third
-/// (altitude) number, which is ignored; other geometry types are a ParseError.
+/// (altitude) number, which read_features keeps; other geometry types are a ParseError here
+/// (read_features skips Point, MultiPoint, LineString and MultiLineString and lists them).
 /// `name` is the file name used in error messages.
 PEAR_API std::vector<Polygon> read_geojson(std::string_view text,
                                            std::string_view name = "<geojson>",
                                            const ReadOptions& options = {});
 
-/// One or more WKT geometries separated by white space: POLYGON, MULTIPOLYGON (with optional
-/// Z, M or ZM, extra ordinates ignored) or their EMPTY forms. Keywords are case-insensitive.
-/// A geometry may carry PostGIS' EWKT prefix `SRID=4326;`, which is read and ignored.
+/// One or more WKT geometries separated by white space: POLYGON, MULTIPOLYGON,
+/// GEOMETRYCOLLECTION of them (with optional Z, M or ZM; extra ordinates ignored here, kept by
+/// read_features) or their EMPTY forms. Keywords are case-insensitive. A geometry may carry
+/// PostGIS' EWKT prefix `SRID=4326;` (ignored here, kept by read_features).
 PEAR_API std::vector<Polygon> read_wkt(std::string_view text, std::string_view name = "<wkt>",
                                        const ReadOptions& options = {});
 
@@ -91,9 +93,10 @@ PEAR_API std::vector<Polygon> read_poly(std::string_view text, std::string_view 
 // WKB (well-known binary): what shapely's `.wkb`, geopandas' to_wkb(), GDAL and PostGIS
 // (ST_AsBinary, ST_AsEWKB) write. A value is a Polygon, a MultiPolygon (its parts may differ in
 // byte order) or an empty GeometryCollection (GEOS' empty polygon): ISO WKB or PostGIS' EWKB,
-// either byte order, with Z, M or ZM ordinates (dropped) and an EWKB SRID (ignored). Other
-// types, a value cut short or followed by more bytes, and counts that the bytes cannot hold are
-// a ParseError naming the byte, counted from the value's first byte.
+// either byte order, with Z, M or ZM ordinates and an EWKB SRID (dropped here, kept by
+// read_features). Other types (read_features skips points and lines, also inside a
+// GeometryCollection), a value cut short or followed by more bytes, and counts that the bytes
+// cannot hold are a ParseError naming the byte, counted from the value's first byte.
 
 /// One WKB value, its bytes exactly (a .wkb file holds one value). Each non-empty Polygon is one
 /// entry, rings as the text readers give them (closing point dropped, at least 3 points unless
@@ -147,6 +150,57 @@ PEAR_API std::vector<Polygon> read_file(const std::filesystem::path& path,
 /// The format read_file would use for this name and content.
 PEAR_API Format guess_format(std::string_view name, std::string_view text);
 
+// Reading with what the file says beside the rings: z (and m) per vertex, a GeoJSON Feature's
+// properties, which geometry of the file a polygon came from, the SRID, and the geometries
+// that are not polygons (skipped and named instead of failing the whole file).
+
+/// One polygon of a file with its side data. A MultiPolygon (or a collection) gives one Feature
+/// per polygon part; the parts share feature_index and properties.
+struct Feature {
+  Polygon polygon = {};
+  /// Empty when the input has no z; else one per vertex of `polygon`, ring after ring (so z[i]
+  /// belongs to vertex i as pear::triangulate numbers them; the closing point is dropped).
+  std::vector<double> z = {};
+  /// Likewise for m (WKT `M`/`ZM`, WKB M/ZM); GeoJSON has none.
+  std::vector<double> m = {};
+  /// GeoJSON: the Feature's "properties" object as its JSON text, verbatim; empty when the
+  /// Feature has `null` or none, and for every other format.
+  std::string properties = {};
+  /// Which geometry of the file: the index of a FeatureCollection's feature, of a top-level
+  /// GeometryCollection's geometry, of a WKT geometry or hex WKB value in the text (from 0);
+  /// 0 for a file of one geometry (a bare GeoJSON array of polygons and a .poly file count as
+  /// one).
+  std::size_t feature_index = 0;
+};
+
+/// A geometry that is no polygon (GeoJSON Point, MultiPoint, LineString, MultiLineString; the
+/// same in WKT and WKB), skipped by read_features.
+struct SkippedGeometry {
+  std::size_t feature_index = 0;     ///< as Feature::feature_index
+  std::string type;                  ///< as the file spells it: "LineString", "POINT", "WKB type 2"
+  std::size_t line = 0, column = 0;  ///< where it starts (0 for binary WKB)
+  std::size_t offset = 0;            ///< its byte offset (in a WKB value: in that value)
+};
+
+struct ReadResult {
+  std::vector<Feature> features;
+  std::vector<SkippedGeometry> skipped;
+  /// The spatial reference's EPSG code: EWKT `SRID=N;`, an EWKB SRID, or a GeoJSON "crs"
+  /// member naming EPSG:N (the 2008 GeoJSON form GDAL writes); 0 when the file gives none.
+  std::uint32_t srid = 0;
+};
+
+/// Reads like read_text/read_file, but keeps z and m, properties and feature indices, and
+/// skips geometries that are no polygon (listed in `skipped`) where read_text fails on them.
+/// A file whose geometries are all skipped is still a ParseError (at the first of them), and
+/// so are: positions of one polygon that differ in having a z (its z would be partial),
+/// geometries of one text with different SRIDs, and GeoJSON properties that are neither an
+/// object nor null.
+PEAR_API ReadResult read_features(std::string_view text, Format format, std::string_view name,
+                                  const ReadOptions& options = {});
+PEAR_API ReadResult read_features_file(const std::filesystem::path& path,
+                                       const ReadOptions& options = {});
+
 /// A triangle mesh: points and counterclockwise index triples into them.
 struct Mesh {
   std::vector<Point> points;
@@ -162,17 +216,32 @@ PEAR_API Mesh read_node_ele(std::string_view node_text, std::string_view ele_tex
 
 /// One triangulated polygon for the writers: its rings (as read) and triangles indexing its
 /// points ring after ring. `part` is empty or has one entry per triangle: the thread or
-/// partition that produced it (the SVG colours by it).
+/// partition that produced it (the SVG colours by it). The rest is what read_features gave
+/// (a Feature's z, properties and feature_index) and the run's status, for OBJ and GeoJSON.
 struct TriangulatedPolygon {
-  Polygon polygon;
-  std::vector<std::array<std::uint32_t, 3>> triangles;
-  std::vector<std::uint32_t> part;
+  Polygon polygon = {};
+  std::vector<std::array<std::uint32_t, 3>> triangles = {};
+  std::vector<std::uint32_t> part = {};
+  std::vector<double> z = {};   ///< empty, or one per point (writers throw invalid_argument else)
+  std::string properties = {};  ///< a JSON object's text, or empty
+  std::size_t feature_index = 0;
+  Status status = Status::ok;
 };
 
-/// OBJ: `v x y 0` for every point, `f a b c` (1-based) for every triangle, one `o` per polygon.
+/// OBJ: `v x y z` for every point (z 0 where the polygon has none), `f a b c` (1-based) for
+/// every triangle, one `o` per polygon. pear's triangles use only the input's vertices (no
+/// option adds a point), so each vertex keeps its input z exactly.
 PEAR_API void write_obj(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
-/// GeoJSON FeatureCollection: one Feature per polygon, its geometry a MultiPolygon of triangles.
-PEAR_API void write_geojson(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
+/// GeoJSON FeatureCollection: one Feature per polygon, its geometry a MultiPolygon of triangles
+/// (positions [x, y, z] where the polygon has z). Its properties are the input's (the members
+/// of `properties`, verbatim) and pear's own under one key, which replaces an input member of
+/// that name: "pear": {"index": the polygon's place in the output (from 0), "feature": its
+/// feature_index, "triangles": how many, "status": "ok" or why not (pear::to_string)}. An
+/// `srid` other than 0 and 4326 (GeoJSON's default, WGS 84) is written as the 2008 form's
+/// "crs" member, {"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::N"}}, which GDAL
+/// reads.
+PEAR_API void write_geojson(std::ostream& out, std::span<const TriangulatedPolygon> polygons,
+                            std::uint32_t srid = 0);
 /// Triangle's .node (all points, numbered from 0) and .ele (triangles) pair.
 PEAR_API void write_node_ele(std::ostream& node, std::ostream& ele,
                              std::span<const TriangulatedPolygon> polygons);

@@ -1,15 +1,18 @@
 // GeoJSON (RFC 7946) polygons by a strict recursive-descent scan: no document tree is built;
 // coordinates go straight into rings. Members may come in any order: a "coordinates" (or
 // "geometry", ...) value seen before "type" is skipped and read again once the type is known.
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "pear/io.hpp"
+#include "readers.hpp"
 #include "scanner.hpp"
 
 namespace pear::io {
 namespace {
 
+using detail::Mode;
 using detail::NumberSyntax;
 using detail::Scanner;
 
@@ -21,10 +24,10 @@ enum class Place { top, geometry, feature };
 
 class GeoJsonReader {
  public:
-  GeoJsonReader(std::string_view text, std::string_view name, const ReadOptions& options)
-      : s_(text, name), options_(options) {}
+  GeoJsonReader(std::string_view text, std::string_view name, const ReadOptions& options, Mode mode)
+      : s_(text, name), options_(options), mode_(mode) {}
 
-  std::vector<Polygon> read() {
+  ReadResult read() {
     s_.skip_space();
     if (s_.peek() == '{') {
       object(Place::top, 0);
@@ -35,7 +38,7 @@ class GeoJsonReader {
     }
     s_.skip_space();
     if (!s_.at_end()) s_.fail_expected(s_.pos, "end of file after the GeoJSON value");
-    return std::move(polygons_);
+    return std::move(result_);
   }
 
  private:
@@ -47,12 +50,16 @@ class GeoJsonReader {
     std::size_t coordinates = none, geometry = none, geometries = none, features = none;
     bool coordinates_read = false, geometry_read = false, geometries_read = false,
          features_read = false;
+    bool skipped = false;           // a geometry that is no polygon, in features mode
+    std::size_t first_feature = 0;  // result_.features' size when the object started
+    std::string_view properties;    // a Feature's properties object, as text
   };
 
   void object(Place place, int depth) {
     if (depth > max_depth) s_.fail(s_.pos, "expected at most 512 nested GeoJSON objects");
     Members m;
     m.object_start = s_.pos;
+    m.first_feature = result_.features.size();
     s_.expect('{', "'{'");
     s_.skip_space();
     if (s_.peek() == '}') s_.fail_expected(s_.pos, "a \"type\" member");
@@ -67,6 +74,9 @@ class GeoJsonReader {
     const std::size_t end = s_.pos;
     if (m.type_at == none) s_.fail(m.object_start, "expected a \"type\" member in this object");
     finish(m, depth);
+    if (m.type == "Feature" && !m.properties.empty())
+      for (std::size_t f = m.first_feature; f < result_.features.size(); ++f)
+        result_.features[f].properties = m.properties;
     s_.pos = end;
   }
 
@@ -99,13 +109,52 @@ class GeoJsonReader {
     } else if (key == "features") {
       remember(m.features);
       m.features_read = try_read(m, m.features, depth);
+    } else if (mode_ == Mode::features && key == "properties") {
+      skip_value(depth + 1);
+      m.properties = properties_text(value_at);
+    } else if (mode_ == Mode::features && key == "crs" && depth == 0) {
+      skip_value(depth + 1);
+      crs(value_at);
     } else {
       skip_value(depth + 1);
     }
   }
 
-  void check_type(const Members& m, Place place) {
+  // The properties value that ends at pos: an object's text, or empty for null.
+  std::string_view properties_text(std::size_t at) {
+    const std::string_view text = s_.text().substr(at, s_.pos - at);
+    if (text == "null") return {};
+    if (text.front() != '{') s_.fail_expected(at, "an object or null as a Feature's properties");
+    return text;
+  }
+
+  // The 2008 GeoJSON "crs" member, as GDAL writes it for a layer not in WGS 84:
+  // {"type":"name","properties":{"name":"urn:ogc:def:crs:EPSG::32633"}} (or "EPSG:32633");
+  // OGC's CRS84 is WGS 84 in longitude, latitude order, EPSG 4326 as GIS software orders it.
+  void crs(std::size_t at) {
+    const std::string_view text = s_.text().substr(at, s_.pos - at);
+    std::uint32_t srid = 0;
+    if (text.find("CRS84") != std::string_view::npos) {
+      srid = 4326;
+    } else if (const std::size_t epsg = text.rfind("EPSG:"); epsg != std::string_view::npos) {
+      std::size_t p = epsg + 5;
+      while (p < text.size() && text[p] == ':') ++p;
+      for (; p < text.size() && text[p] >= '0' && text[p] <= '9' && srid < 100000000; ++p)
+        srid = srid * 10 + static_cast<std::uint32_t>(text[p] - '0');
+    }
+    if (srid == 0) s_.fail_expected(at, "a \"crs\" naming EPSG:N or CRS84");
+    result_.srid = srid;
+  }
+
+  void check_type(Members& m, Place place) {
     const std::string& t = m.type;
+    if (mode_ == Mode::features && place != Place::feature &&
+        (t == "Point" || t == "MultiPoint" || t == "LineString" || t == "MultiLineString")) {
+      m.skipped = true;
+      const detail::Location where = s_.location(m.object_start);
+      result_.skipped.push_back({feature_index_, t, where.line, where.column, m.object_start});
+      return;
+    }
     const bool geometry = t == "Polygon" || t == "MultiPolygon" || t == "GeometryCollection";
     const bool ok = place == Place::top ? geometry || t == "Feature" || t == "FeatureCollection"
                     : place == Place::feature ? t == "Feature"
@@ -132,6 +181,7 @@ class GeoJsonReader {
 
   bool wanted(const Members& m, std::size_t at) const {
     const std::string& t = m.type;
+    if (m.skipped) return false;
     if (at == m.coordinates) return t == "Polygon" || t == "MultiPolygon";
     if (at == m.geometry) return t == "Feature";
     if (at == m.geometries) return t == "GeometryCollection";
@@ -152,10 +202,25 @@ class GeoJsonReader {
         object(Place::geometry, depth + 1);
       }
     } else if (t == "GeometryCollection") {
-      array_of([&] { object(Place::geometry, depth + 1); }, "an array of geometries '['");
+      numbered(
+          depth == 0, [&] { object(Place::geometry, depth + 1); }, "an array of geometries '['");
     } else {
-      array_of([&] { object(Place::feature, depth + 1); }, "an array of features '['");
+      numbered(
+          true, [&] { object(Place::feature, depth + 1); }, "an array of features '['");
     }
+  }
+
+  // An array of a file's features (or top-level geometries), each numbered for feature_index_
+  // when `count` says so.
+  template <class Element>
+  void numbered(bool count, Element element, const char* what) {
+    std::size_t index = 0;
+    array_of(
+        [&] {
+          if (count) feature_index_ = index++;
+          element();
+        },
+        what);
   }
 
   void finish(const Members& m, int depth) {
@@ -171,7 +236,7 @@ class GeoJsonReader {
                           {"GeometryCollection", m.geometries, m.geometries_read, "geometries"},
                           {"FeatureCollection", m.features, m.features_read, "features"}};
     for (const Need& need : needs) {
-      if (m.type != need.type) continue;
+      if (m.type != need.type || m.skipped) continue;
       if (need.at == none)
         s_.fail(m.object_start,
                 std::string("expected a \"") + need.member + "\" member in this " + need.type);
@@ -198,19 +263,40 @@ class GeoJsonReader {
   }
 
   void polygon_coordinates() {
-    Polygon polygon;
+    Feature feature;
+    feature.feature_index = feature_index_;
+    Polygon& polygon = feature.polygon;
+    int numbers = 0;  // per position in this polygon: 2, or 3 with z (features mode)
     array_of(
         [&] {
           const std::size_t ring_at = s_.pos;
           Ring& ring = polygon.emplace_back();
-          array_of([&] { ring.push_back(position()); }, "a ring: an array of positions '['");
+          array_of(
+              [&] {
+                const std::size_t at = s_.pos;
+                double z = 0;
+                int n = 0;
+                ring.push_back(position(z, n));
+                if (mode_ == Mode::polygons) return;
+                if (numbers == 0) numbers = n;
+                if (n != numbers)
+                  s_.fail(at, "expected " + std::to_string(numbers) +
+                                  " numbers in every position of this polygon, as in its "
+                                  "first, but found " +
+                                  std::to_string(n) + " (its z would be partial)");
+                if (n == 3) feature.z.push_back(z);
+              },
+              "a ring: an array of positions '['");
+          const std::size_t kept = ring.size();
           detail::finish_ring(ring, s_, ring_at, options_);
+          if (numbers == 3 && ring.size() < kept) feature.z.pop_back();  // the closing point
         },
         "a polygon: an array of rings '['");
-    if (!polygon.empty()) polygons_.push_back(std::move(polygon));
+    if (!polygon.empty()) result_.features.push_back(std::move(feature));
   }
 
-  Point position() {
+  // x and y; the third number (altitude) in z; how many numbers (2, or 3 for 3 or more).
+  Point position(double& z, int& numbers) {
     s_.expect('[', "a position '[x, y]'");
     s_.skip_space();
     Point p;
@@ -220,10 +306,12 @@ class GeoJsonReader {
     s_.skip_space();
     p.y = s_.number(NumberSyntax::json);
     s_.skip_space();
-    while (s_.peek() == ',') {  // an altitude (or more): read and ignored
+    numbers = 2;
+    while (s_.peek() == ',') {  // an altitude; anything after it is ignored
       ++s_.pos;
       s_.skip_space();
-      s_.number(NumberSyntax::json);
+      const double value = s_.number(NumberSyntax::json);
+      if (numbers == 2) z = value, numbers = 3;
       s_.skip_space();
     }
     s_.expect(']', "',' or ']' after a coordinate");
@@ -343,14 +431,21 @@ class GeoJsonReader {
 
   Scanner s_;
   const ReadOptions& options_;
-  std::vector<Polygon> polygons_;
+  Mode mode_;
+  ReadResult result_;
+  std::size_t feature_index_ = 0;
 };
 
 }  // namespace
 
+ReadResult detail::read_geojson(std::string_view text, std::string_view name,
+                                const ReadOptions& options, Mode mode) {
+  return GeoJsonReader(text, name, options, mode).read();
+}
+
 std::vector<Polygon> read_geojson(std::string_view text, std::string_view name,
                                   const ReadOptions& options) {
-  return GeoJsonReader(text, name, options).read();
+  return detail::polygons_of(detail::read_geojson(text, name, options, Mode::polygons));
 }
 
 }  // namespace pear::io

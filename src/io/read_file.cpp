@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "pear/io.hpp"
+#include "readers.hpp"
 
 namespace pear::io {
 
@@ -66,7 +67,55 @@ std::vector<Polygon> read_text(std::string_view text, Format format, std::string
   return read_geojson(text, name, options);
 }
 
-std::vector<Polygon> read_file(const std::filesystem::path& path, const ReadOptions& options) {
+std::vector<Polygon> detail::polygons_of(ReadResult&& result) {
+  std::vector<Polygon> polygons;
+  polygons.reserve(result.features.size());
+  for (Feature& feature : result.features) polygons.push_back(std::move(feature.polygon));
+  return polygons;
+}
+
+namespace {
+ReadResult read_any(std::string_view text, Format format, std::string_view name,
+                    const ReadOptions& options) {
+  using detail::Mode;
+  switch (format) {
+    case Format::wkt:
+      return detail::read_wkt(text, name, options, Mode::features);
+    case Format::wkb:
+      return detail::read_wkb(std::as_bytes(std::span(text)), name, options, Mode::features);
+    case Format::hex_wkb:
+      return detail::read_hex_wkb(text, name, options, Mode::features);
+    case Format::poly: {
+      ReadResult result;
+      for (Polygon& polygon : read_poly(text, name, options))
+        result.features.push_back({std::move(polygon), {}, {}, {}, 0});
+      return result;
+    }
+    case Format::geojson:
+      break;
+  }
+  return detail::read_geojson(text, name, options, Mode::features);
+}
+}  // namespace
+
+ReadResult read_features(std::string_view text, Format format, std::string_view name,
+                         const ReadOptions& options) {
+  ReadResult result = read_any(text, format, name, options);
+  if (result.features.empty() && !result.skipped.empty()) {
+    // Nothing but geometries that are not polygons: the strict reader's error names the first.
+    read_text(text, format, name, options);
+    const SkippedGeometry& first = result.skipped.front();
+    std::string detail = "expected a Polygon or MultiPolygon but found only " +
+                         std::to_string(result.skipped.size()) +
+                         " geometries that are not, the first a " + first.type;
+    if (first.line == 0) detail = "byte " + std::to_string(first.offset) + ": " + detail;
+    throw ParseError(std::string(name), first.line, first.column, first.offset, detail);
+  }
+  return result;
+}
+
+namespace {
+std::string read_whole(const std::filesystem::path& path) {
   const std::string name = path.string();
   std::error_code error;
   if (std::filesystem::is_directory(path, error))
@@ -79,7 +128,20 @@ std::vector<Polygon> read_file(const std::filesystem::path& path, const ReadOpti
     text.append(chunk, static_cast<std::size_t>(in.gcount()));
   if (in.bad())
     throw ParseError(name, 0, 0, 0, std::string("cannot read: ") + std::strerror(errno));
+  return text;
+}
+}  // namespace
+
+std::vector<Polygon> read_file(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string text = read_whole(path);
+  const std::string name = path.string();
   return read_text(text, guess_format(name, text), name, options);
+}
+
+ReadResult read_features_file(const std::filesystem::path& path, const ReadOptions& options) {
+  const std::string text = read_whole(path);
+  const std::string name = path.string();
+  return read_features(text, guess_format(name, text), name, options);
 }
 
 }  // namespace pear::io

@@ -138,15 +138,19 @@ void Scanner::fail_expected(std::size_t offset, std::string_view expected) const
   fail(offset, "expected " + std::string(expected) + " but found " + describe_found(offset));
 }
 
-void Scanner::fail(std::size_t offset, std::string detail) const {
+Location Scanner::location(std::size_t offset) const {
   offset = std::min(offset, text_.size());
   const std::string_view before = text_.substr(0, offset);
   const std::size_t line =
       1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
   const std::size_t line_start = before.rfind('\n');
-  const std::size_t column =
-      line_start == std::string_view::npos ? offset + 1 : offset - line_start;
-  throw ParseError(std::string(name_), line, column, offset, std::move(detail));
+  return {line, line_start == std::string_view::npos ? offset + 1 : offset - line_start};
+}
+
+void Scanner::fail(std::size_t offset, std::string detail) const {
+  offset = std::min(offset, text_.size());
+  const Location where = location(offset);
+  throw ParseError(std::string(name_), where.line, where.column, offset, std::move(detail));
 }
 
 void finish_ring(Ring& ring, const Scanner& scanner, std::size_t offset,

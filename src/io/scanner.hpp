@@ -15,6 +15,11 @@ namespace pear::io::detail {
 /// Triangle's files (a leading '+', "5." and ".5").
 enum class NumberSyntax { json, loose };
 
+/// A place in a text, counted from 1 (the column in bytes).
+struct Location {
+  std::size_t line, column;
+};
+
 class Scanner {
  public:
   /// Starts after a UTF-8 byte order mark, which some editors write at the start of a text.
@@ -63,6 +68,8 @@ class Scanner {
   [[noreturn]] void fail_expected(std::size_t offset, std::string_view expected) const;
   /// Any message at offset.
   [[noreturn]] void fail(std::size_t offset, std::string detail) const;
+  /// The line and column of an offset.
+  Location location(std::size_t offset) const;
   /// A short description of what is at offset: "end of file", "'x'", "'NaN'", "byte 0x00".
   std::string describe_found(std::size_t offset) const;
 

@@ -61,6 +61,9 @@ std::vector<Point> flat_points(const Polygon& polygon) {
 }
 
 void check_triangles(const TriangulatedPolygon& p, std::size_t point_count) {
+  if (!p.z.empty() && p.z.size() != point_count)
+    throw std::invalid_argument("a polygon of " + std::to_string(point_count) + " points has " +
+                                std::to_string(p.z.size()) + " z values");
   for (const auto& t : p.triangles)
     for (const std::uint32_t v : t)
       if (v >= point_count)
@@ -92,6 +95,71 @@ void json_polygon(Sink& out, const Polygon& polygon) {
   out << ']';
 }
 
+/// A triangle's closed ring, with z where the polygon has it.
+void json_triangle(Sink& out, const std::vector<Point>& points, const std::vector<double>& z,
+                   const std::array<std::uint32_t, 3>& t) {
+  out << '[';
+  for (int k = 0; k < 4; ++k) {
+    const std::uint32_t v = t[k % 3];
+    out << (k > 0 ? ",[" : "[") << points[v].x << ',' << points[v].y;
+    if (!z.empty()) out << ',' << z[v];
+    out << ']';
+  }
+  out << ']';
+}
+
+/// The members of a JSON object's text without its braces, less a top-level member named
+/// "pear" (pear's own takes its place). The text is valid JSON (a reader's verbatim copy of a
+/// properties object), so only strings and nesting need following.
+std::string members_except_pear(std::string_view object) {
+  const auto trim = [](std::string_view text) {
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) return std::string_view{};
+    return text.substr(first, text.find_last_not_of(" \t\r\n") - first + 1);
+  };
+  object = trim(object);
+  if (object.empty()) return {};
+  if (object.size() < 2 || object.front() != '{' || object.back() != '}')
+    throw std::invalid_argument("properties must be a JSON object, not: " +
+                                std::string(object.substr(0, 40)));
+  std::string out;
+  const auto keep = [&](std::string_view member) {
+    member = trim(member);
+    const std::string_view rest = member.starts_with("\"pear\"") ? trim(member.substr(6)) : "";
+    if (member.empty() || rest.starts_with(':')) return;
+    if (!out.empty()) out += ',';
+    out += member;
+  };
+  int depth = 0;
+  bool in_string = false;
+  std::size_t start = 1;
+  for (std::size_t i = 1; i + 1 < object.size(); ++i) {
+    const char c = object[i];
+    if (in_string) {
+      i += c == '\\' ? 1 : 0;
+      in_string = c != '"';
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '{' || c == '[') {
+      ++depth;
+    } else if (c == '}' || c == ']') {
+      --depth;
+    } else if (c == ',' && depth == 0) {
+      keep(object.substr(start, i - start));
+      start = i + 1;
+    }
+  }
+  keep(object.substr(start, object.size() - 1 - start));
+  return out;
+}
+
+/// The 2008 GeoJSON "crs" member that GDAL reads, for an SRID other than WGS 84's.
+void json_crs(Sink& out, std::uint32_t srid) {
+  if (srid == 0 || srid == 4326) return;  // none, or RFC 7946's default
+  out << "\"crs\":{\"type\":\"name\",\"properties\":{\"name\":\"urn:ogc:def:crs:EPSG::"
+      << std::size_t{srid} << "\"}},";
+}
+
 }  // namespace
 
 void write_obj(std::ostream& stream, std::span<const TriangulatedPolygon> polygons) {
@@ -101,26 +169,34 @@ void write_obj(std::ostream& stream, std::span<const TriangulatedPolygon> polygo
     const std::vector<Point> points = flat_points(polygons[i].polygon);
     check_triangles(polygons[i], points.size());
     out << "o polygon_" << i << '\n';
-    for (const Point& p : points) out << "v " << p.x << ' ' << p.y << " 0\n";
+    const std::vector<double>& z = polygons[i].z;
+    for (std::size_t v = 0; v < points.size(); ++v)
+      out << "v " << points[v].x << ' ' << points[v].y << ' ' << (z.empty() ? 0.0 : z[v]) << '\n';
     for (const auto& t : polygons[i].triangles)
       out << "f " << offset + t[0] << ' ' << offset + t[1] << ' ' << offset + t[2] << '\n';
     offset += points.size();
   }
 }
 
-void write_geojson(std::ostream& stream, std::span<const TriangulatedPolygon> polygons) {
+void write_geojson(std::ostream& stream, std::span<const TriangulatedPolygon> polygons,
+                   std::uint32_t srid) {
   Sink out(stream);
-  out << "{\"type\":\"FeatureCollection\",\"features\":[";
+  out << "{\"type\":\"FeatureCollection\",";
+  json_crs(out, srid);
+  out << "\"features\":[";
   for (std::size_t i = 0; i < polygons.size(); ++i) {
-    const std::vector<Point> points = flat_points(polygons[i].polygon);
-    check_triangles(polygons[i], points.size());
-    out << (i > 0 ? ",\n" : "\n") << "{\"type\":\"Feature\",\"properties\":{\"index\":" << i
-        << ",\"triangles\":" << polygons[i].triangles.size()
-        << "},\"geometry\":{\"type\":\"MultiPolygon\",\"coordinates\":[";
-    for (std::size_t k = 0; k < polygons[i].triangles.size(); ++k) {
-      const auto& t = polygons[i].triangles[k];
+    const TriangulatedPolygon& polygon = polygons[i];
+    const std::vector<Point> points = flat_points(polygon.polygon);
+    check_triangles(polygon, points.size());
+    const std::string members = members_except_pear(polygon.properties);
+    out << (i > 0 ? ",\n" : "\n") << "{\"type\":\"Feature\",\"properties\":{" << members
+        << (members.empty() ? "" : ",") << "\"pear\":{\"index\":" << i
+        << ",\"feature\":" << polygon.feature_index << ",\"triangles\":" << polygon.triangles.size()
+        << ",\"status\":\"" << std::string_view(to_string(polygon.status))
+        << "\"}},\"geometry\":{\"type\":\"MultiPolygon\",\"coordinates\":[";
+    for (std::size_t k = 0; k < polygon.triangles.size(); ++k) {
       out << (k > 0 ? ",[" : "[");
-      json_ring(out, Ring{points[t[0]], points[t[1]], points[t[2]]});
+      json_triangle(out, points, polygon.z, polygon.triangles[k]);
       out << ']';
     }
     out << "]}}";

@@ -145,7 +145,7 @@ TEST(WktErrors, EmptyFile) {
 }
 TEST(WktErrors, WrongGeometry) {
   wkt_error("LINESTRING (0 0, 1 1)", 1, 1,
-            "expected POLYGON or MULTIPOLYGON but found 'LINESTRING'");
+            "expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION but found 'LINESTRING'");
 }
 TEST(WktErrors, Truncated) {
   wkt_error("POLYGON ((0 0, 1 0,\n 1", 2, 3, "expected white space and the y coordinate");
@@ -167,7 +167,8 @@ TEST(WktErrors, MalformedSridPrefix) {
   wkt_error("SRID=-1;POLYGON EMPTY", 1, 6, "expected a non-negative SRID but found '-1'");
   wkt_error("srid:4326;POLYGON EMPTY", 1, 5, "expected '=' after SRID but found ':'");
   wkt_error("SRID=4326 POLYGON EMPTY", 1, 10, "expected ';' after the SRID but found white space");
-  wkt_error("POLYGON EMPTY\nSRID=4326;", 2, 11, "expected POLYGON or MULTIPOLYGON but found end");
+  wkt_error("POLYGON EMPTY\nSRID=4326;", 2, 11,
+            "expected POLYGON, MULTIPOLYGON or GEOMETRYCOLLECTION but found end");
 }
 TEST(WktErrors, ColumnsCountTheByteOrderMark) {
   // The mark is skipped but stays in the text: offsets and columns are those of the file.

@@ -211,7 +211,7 @@ TEST(RoundTrip, TriangleMeshesAsObjNodeEleAndGeoJson) {
   const std::vector<std::array<std::uint32_t, 3>> triangles = {
       {0, 1, 4}, {1, 7, 4}, {1, 2, 7}, {2, 6, 7}, {2, 3, 6}, {3, 5, 6}, {3, 0, 5}, {0, 4, 5}};
   std::vector<io::TriangulatedPolygon> meshes;
-  for (const auto& p : polygons) meshes.push_back({p, triangles, {}});
+  for (const auto& p : polygons) meshes.push_back({.polygon = p, .triangles = triangles});
 
   std::vector<Point> points;  // all polygons' points, as the writers number them
   std::vector<std::array<std::uint32_t, 3>> all_triangles;
@@ -249,7 +249,8 @@ TEST(RoundTrip, TriangleMeshesAsObjNodeEleAndGeoJson) {
 }
 
 TEST(Writers, RejectTriangleIndexPastThePoints) {
-  const std::vector<io::TriangulatedPolygon> bad = {{{{{0, 0}, {1, 0}, {0, 1}}}, {{0, 1, 3}}, {}}};
+  const std::vector<io::TriangulatedPolygon> bad = {
+      {.polygon = {{{0, 0}, {1, 0}, {0, 1}}}, .triangles = {{0, 1, 3}}}};
   std::ostringstream out, ele;
   EXPECT_THROW(io::write_obj(out, bad), std::invalid_argument);
   EXPECT_THROW(io::write_node_ele(out, ele, bad), std::invalid_argument);

@@ -93,7 +93,8 @@ std::size_t subpath_count(const std::string& svg_text, const std::string& style 
 // A 4 x 1 rectangle listed from its top-left corner, split into two triangles.
 io::TriangulatedPolygon rectangle(double scale = 1, Point shift = {0, 0}) {
   auto at = [&](double x, double y) { return Point{shift.x + x * scale, shift.y + y * scale}; };
-  return {{{at(0, 1), at(0, 0), at(4, 0), at(4, 1)}}, {{0, 1, 2}, {0, 2, 3}}, {}};
+  return {.polygon = {{at(0, 1), at(0, 0), at(4, 0), at(4, 1)}},
+          .triangles = {{0, 1, 2}, {0, 2, 3}}};
 }
 
 TEST(Svg, FitsTheViewportKeepingTheAspect) {

@@ -178,18 +178,36 @@ std::vector<Input> expand_inputs(std::span<const std::string_view> args) {
   return out;
 }
 
-std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options,
-                                std::size_t gzip_limit) {
+io::ReadResult read_input(const Input& input, const io::ReadOptions& options,
+                          std::size_t gzip_limit) {
   const std::string& name = input.name;
   if (!input.problem.empty()) throw io::ParseError(name, 0, 0, 0, input.problem);
   if (name == "-") {
     std::string text(std::istreambuf_iterator<char>(std::cin), {});
-    return io::read_text(text, io::guess_format("", text), "<stdin>", options);
+    return io::read_features(text, io::guess_format("", text), "<stdin>", options);
   }
-  if (!name.ends_with(".gz")) return io::read_file(name, options);
+  if (!name.ends_with(".gz")) return io::read_features_file(name, options);
   const std::string text = read_gzip(name, gzip_limit);
   const std::string inner = name.substr(0, name.size() - 3);
-  return io::read_text(text, io::guess_format(inner, text), name, options);
+  return io::read_features(text, io::guess_format(inner, text), name, options);
+}
+
+std::vector<std::string> skipped_warnings(const std::string& file, const io::ReadResult& result,
+                                          std::size_t limit) {
+  std::vector<std::string> lines;
+  for (const io::SkippedGeometry& g : result.skipped) {
+    if (lines.size() == limit) {
+      lines.push_back(file + ": skipped " + std::to_string(result.skipped.size() - limit) +
+                      " more geometries that are not polygons");
+      break;
+    }
+    const std::string where = g.line == 0
+                                  ? ": byte " + std::to_string(g.offset)
+                                  : ":" + std::to_string(g.line) + ":" + std::to_string(g.column);
+    lines.push_back(file + where + ": feature " + std::to_string(g.feature_index) + ": skipped a " +
+                    g.type + " (not a polygon)");
+  }
+  return lines;
 }
 
 Progress::Progress(std::size_t files)

@@ -32,11 +32,16 @@ std::vector<Input> expand_inputs(std::span<const std::string_view> args);
 /// size is read as it is).
 inline constexpr std::size_t default_gzip_limit = std::size_t{1} << 30;
 
-/// Reads and parses one input (gzip by zlib when the name ends in .gz, refused past
-/// `gzip_limit` inflated bytes). Throws pear::io::ParseError naming the file on any problem,
-/// the input's own problem included.
-std::vector<Polygon> read_input(const Input& input, const io::ReadOptions& options,
-                                std::size_t gzip_limit);
+/// Reads and parses one input with io::read_features (gzip by zlib when the name ends in .gz,
+/// refused past `gzip_limit` inflated bytes). Throws pear::io::ParseError naming the file on
+/// any problem, the input's own problem included.
+io::ReadResult read_input(const Input& input, const io::ReadOptions& options,
+                          std::size_t gzip_limit);
+
+/// The warnings for what a read skipped, one a geometry ("FILE:LINE:COL: feature K: skipped a
+/// LineString (not a polygon)"), at most `limit` and then one line counting the rest.
+std::vector<std::string> skipped_warnings(const std::string& file, const io::ReadResult& result,
+                                          std::size_t limit = 10);
 
 /// Progress on stderr, only when it is a terminal and there are many files; then a summary.
 class Progress {

@@ -111,7 +111,7 @@ std::ofstream open(const fs::path& path) {
 }
 
 void write(OutputFormat format, std::ostream& out, const std::string& input,
-           std::span<const io::TriangulatedPolygon> results) {
+           std::span<const io::TriangulatedPolygon> results, std::uint32_t srid) {
   std::size_t triangles = 0;
   for (const auto& r : results) triangles += r.triangles.size();
   switch (format) {
@@ -119,7 +119,7 @@ void write(OutputFormat format, std::ostream& out, const std::string& input,
       io::write_obj(out, results);
       break;
     case OutputFormat::geojson:
-      io::write_geojson(out, results);
+      io::write_geojson(out, results, srid);
       break;
     case OutputFormat::svg:
       io::write_svg(out, results,
@@ -172,10 +172,10 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<O
 }
 
 void write_output(const OutputPlan& plan, const std::string& input,
-                  std::span<const io::TriangulatedPolygon> results) {
+                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid) {
   const OutputFormat format = *plan.format;
   if (plan.path == "-") {
-    write(format, std::cout, input, results);
+    write(format, std::cout, input, results, srid);
     std::cout.flush();
     return;
   }
@@ -189,7 +189,7 @@ void write_output(const OutputPlan& plan, const std::string& input,
     return;
   }
   std::ofstream out = open(files[0]);
-  write(format, out, input, results);
+  write(format, out, input, results, srid);
   if (!out.flush()) cannot_write(files[0].string());
 }
 

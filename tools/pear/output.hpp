@@ -28,7 +28,8 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<O
                        std::span<const Input> inputs);
 
 /// Writes one input's results as the plan says. Throws std::runtime_error if it cannot.
+/// `srid` (0: none) is the input's spatial reference, which the GeoJSON output names.
 void write_output(const OutputPlan& plan, const std::string& input,
-                  std::span<const io::TriangulatedPolygon> results);
+                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid);
 
 }  // namespace pear::cli

@@ -57,7 +57,10 @@ int run_stats(std::span<const std::string_view> arguments) {
   for (const Input& input : inputs) {
     const std::string& file = input.name;
     try {
-      const std::vector<Polygon> polygons = read_input(input, read, gzip_limit);
+      const io::ReadResult result = read_input(input, read, gzip_limit);
+      for (const std::string& warning : skipped_warnings(file, result)) progress.message(warning);
+      std::vector<Polygon> polygons;
+      for (const io::Feature& feature : result.features) polygons.push_back(feature.polygon);
       if (polygons.empty()) throw io::ParseError(file, 0, 0, 0, "no polygon in it");
       for (std::size_t i = 0; i < polygons.size(); ++i, ++polygons_total) {
         const EarStatistics e = triangulator.ear_statistics(polygons[i]);

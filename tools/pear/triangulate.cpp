@@ -41,7 +41,9 @@ void print_help() {
 Triangulates every polygon in the files: GeoJSON (.json, .geojson), WKT or EWKT (.wkt),
 Triangle's .poly, WKB or EWKB (.wkb: one value; .hexwkb, .wkb.hex: hex, a value a line), any
 of them gzipped (.gz); '-' reads stdin. Directories are searched for such files; quoted globs
-are expanded.
+are expanded. Points and lines among the polygons are skipped, each named on stderr. GeoJSON
+output keeps each feature's properties (pear's own under "pear") and the SRID; GeoJSON and
+OBJ keep z (docs/cli.md).
 
 options:
   --algorithm NAME    which triangulation algorithm (default auto):
@@ -153,9 +155,11 @@ const Diagnostic* explaining(Status status, std::span<const Diagnostic> diagnost
 }
 
 // Reports one polygon's result: its stats line, its problems (and the test build's fault).
-io::TriangulatedPolygon report_one(const Settings& s, const Polygon& polygon, PolygonResult result,
+// The feature's polygon, z and properties move into what is written.
+io::TriangulatedPolygon report_one(const Settings& s, io::Feature& feature, PolygonResult result,
                                    const std::string& file, std::size_t index, Totals& totals,
                                    Progress& progress) {
+  const Polygon& polygon = feature.polygon;
 #ifdef PEAR_CLI_FAULT_INJECTION
   // Only in the test build's pear-fault-injection (tests/cli): no correct engine result is
   // invalid, so exit code 3 is tested by dropping a triangle.
@@ -195,7 +199,12 @@ io::TriangulatedPolygon report_one(const Settings& s, const Polygon& polygon, Po
     }
     if (s.stats) std::printf("%s\n", line.str().c_str());
   }
-  return {polygon, std::move(result.triangles), {}};
+  return {.polygon = std::move(feature.polygon),
+          .triangles = std::move(result.triangles),
+          .z = std::move(feature.z),
+          .properties = std::move(feature.properties),
+          .feature_index = feature.feature_index,
+          .status = result.status};
 }
 
 /// Files read but not yet triangulated: they go to pear::triangulate_batch together, so that
@@ -205,10 +214,10 @@ class Group {
   /// Vertices past which the group is triangulated before more files are read.
   static constexpr std::size_t vertex_budget = std::size_t{1} << 20;
 
-  void add(std::string file, std::vector<Polygon> polygons) {
-    for (const Polygon& polygon : polygons)
-      for (const Ring& ring : polygon) vertices_ += ring.size();
-    files_.push_back({std::move(file), std::move(polygons)});
+  void add(std::string file, io::ReadResult read) {
+    for (const io::Feature& feature : read.features)
+      for (const Ring& ring : feature.polygon) vertices_ += ring.size();
+    files_.push_back({std::move(file), std::move(read)});
   }
   bool full() const { return vertices_ >= vertex_budget; }
 
@@ -225,8 +234,8 @@ class Group {
     std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
     coordinates.reserve(2 * vertices_);
     for (const File& f : files_) {
-      for (const Polygon& polygon : f.polygons) {
-        for (const Ring& ring : polygon) {
+      for (const io::Feature& feature : f.read.features) {
+        for (const Ring& ring : feature.polygon) {
           for (const Point& p : ring) coordinates.insert(coordinates.end(), {p.x, p.y});
           ring_offsets.push_back(static_cast<std::int64_t>(coordinates.size() / 2));
         }
@@ -249,22 +258,26 @@ class Group {
           progress.advance();
           continue;
         }
-        add(std::move(f.name), std::move(f.polygons));
+        add(std::move(f.name), std::move(f.read));
         flush(s, plan, totals, progress);
       }
       return;
     }
     std::size_t p = 0;
     for (File& f : files_) {
+      // What the read skipped, said here to stay in the order of the files.
+      for (const std::string& warning :
+           skipped_warnings(f.name == "-" ? "<stdin>" : f.name, f.read))
+        progress.message(warning);
       try {
         std::vector<io::TriangulatedPolygon> results;
-        for (std::size_t i = 0; i < f.polygons.size(); ++i, ++p) {
-          results.push_back(report_one(s, f.polygons[i],
+        for (std::size_t i = 0; i < f.read.features.size(); ++i, ++p) {
+          results.push_back(report_one(s, f.read.features[i],
                                        take(batch, profile, p, ring_offsets, polygon_offsets),
                                        f.name, i, totals, progress));
           ++totals.polygons;
         }
-        if (plan.format) write_output(plan, f.name, results);
+        if (plan.format) write_output(plan, f.name, results, f.read.srid);
       } catch (const std::bad_alloc&) {
         fail(f.name + ": out of memory while reporting or writing it");
       } catch (const std::exception& e) {  // an unwritable output, named with the reason
@@ -279,7 +292,7 @@ class Group {
  private:
   struct File {
     std::string name;
-    std::vector<Polygon> polygons;
+    io::ReadResult read;
   };
 
   void clear() {
@@ -320,10 +333,10 @@ int run_triangulate(std::span<const std::string_view> arguments) {
   Group group;
   for (const Input& input : inputs) {
     std::string problem;
-    std::vector<Polygon> polygons;
+    io::ReadResult read;
     try {
-      polygons = read_input(input, s.read, s.gzip_limit);
-      if (polygons.empty()) problem = display_name(input) + ": no polygon in it";
+      read = read_input(input, s.read, s.gzip_limit);
+      if (read.features.empty()) problem = display_name(input) + ": no polygon in it";
     } catch (const io::ParseError& e) {  // naming the place
       problem = e.what();
     } catch (const std::bad_alloc&) {
@@ -339,7 +352,7 @@ int run_triangulate(std::span<const std::string_view> arguments) {
       progress.advance();
       continue;
     }
-    group.add(input.name, std::move(polygons));
+    group.add(input.name, std::move(read));
     if (group.full()) group.flush(s, plan, totals, progress);
   }
   group.flush(s, plan, totals, progress);
