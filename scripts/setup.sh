@@ -11,6 +11,7 @@ if [[ "${1:-}" != minimal ]]; then
              # tests/cli/test_svg_render.py: the CLI's SVG drawn by real renderers, read by Pillow
              librsvg2-bin python3-pil
              chromium                                # ~90 MB download, ~20 s to unpack: 'large' only
+             libgdal-dev gdal-bin                    # the CLI's GIS formats; ogr2ogr in tests/cli
              # the Python package (python/) and its tests: shapely, geopandas, Dask, earcut
              python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
              python3-shapely python3-geopandas python3-dask python3-distributed

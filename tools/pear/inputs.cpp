@@ -26,6 +26,9 @@ bool is_polygon_file(const fs::path& path) {
   if (name.ends_with(".gz")) name.resize(name.size() - 3);
   for (const char* ext : {".json", ".geojson", ".wkt", ".poly", ".wkb", ".hexwkb", ".wkb.hex"})
     if (name.ends_with(ext)) return true;
+  if (gis::available())
+    for (const char* ext : {".gpkg", ".shp", ".fgb"})
+      if (name.ends_with(ext)) return true;
   return false;
 }
 
@@ -178,10 +181,20 @@ std::vector<Input> expand_inputs(std::span<const std::string_view> args) {
   return out;
 }
 
-io::ReadResult read_input(const Input& input, const io::ReadOptions& options,
-                          std::size_t gzip_limit) {
+gis::Read read_input(const Input& input, const io::ReadOptions& options, std::size_t gzip_limit,
+                     const gis::LayerChoice& choice) {
   const std::string& name = input.name;
   if (!input.problem.empty()) throw io::ParseError(name, 0, 0, 0, input.problem);
+  if (gis::reads(name)) return gis::read(name, choice, options);
+  if (choice.layer || choice.where)
+    throw io::ParseError(name, 0, 0, 0,
+                         "--layer and --where apply to files read through GDAL, not to this one");
+  return {read_own_format(input, options, gzip_limit), nullptr, {}, {}};
+}
+
+io::ReadResult read_own_format(const Input& input, const io::ReadOptions& options,
+                               std::size_t gzip_limit) {
+  const std::string& name = input.name;
   if (name == "-") {
     std::string text(std::istreambuf_iterator<char>(std::cin), {});
     return io::read_features(text, io::guess_format("", text), "<stdin>", options);
@@ -193,7 +206,7 @@ io::ReadResult read_input(const Input& input, const io::ReadOptions& options,
 }
 
 std::vector<std::string> skipped_warnings(const std::string& file, const io::ReadResult& result,
-                                          std::size_t limit) {
+                                          bool layer, std::size_t limit) {
   std::vector<std::string> lines;
   for (const io::SkippedGeometry& g : result.skipped) {
     if (lines.size() == limit) {
@@ -201,7 +214,8 @@ std::vector<std::string> skipped_warnings(const std::string& file, const io::Rea
                       " more geometries that are not polygons");
       break;
     }
-    const std::string where = g.line == 0
+    const std::string where = layer ? ""
+                              : g.line == 0
                                   ? ": byte " + std::to_string(g.offset)
                                   : ":" + std::to_string(g.line) + ":" + std::to_string(g.column);
     lines.push_back(file + where + ": feature " + std::to_string(g.feature_index) + ": skipped a " +

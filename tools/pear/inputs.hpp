@@ -9,6 +9,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gis.hpp"
 #include "pear/io.hpp"
 
 namespace pear::cli {
@@ -21,7 +22,8 @@ struct Input {
 };
 
 /// The inputs the arguments name: "-" (stdin) and existing files as given, directories walked
-/// recursively for .json/.geojson/.wkt/.poly/.wkb/.hexwkb/.wkb.hex (optionally .gz) files in
+/// recursively for .json/.geojson/.wkt/.poly/.wkb/.hexwkb/.wkb.hex (optionally .gz) files, and
+/// .gpkg/.shp/.fgb when built with GDAL, in
 /// name order (a directory that cannot be read is an input with its problem, and the walk goes
 /// on), other arguments expanded as globs. An argument that names nothing is kept, so reading it
 /// reports the problem in order with the other files.
@@ -33,15 +35,21 @@ std::vector<Input> expand_inputs(std::span<const std::string_view> args);
 inline constexpr std::size_t default_gzip_limit = std::size_t{1} << 30;
 
 /// Reads and parses one input with io::read_features (gzip by zlib when the name ends in .gz,
-/// refused past `gzip_limit` inflated bytes). Throws pear::io::ParseError naming the file on
-/// any problem, the input's own problem included.
-io::ReadResult read_input(const Input& input, const io::ReadOptions& options,
-                          std::size_t gzip_limit);
+/// refused past `gzip_limit` inflated bytes), or through GDAL where gis::reads says so (then
+/// `choice` picks the layer and features; for pear's own formats giving one is an error).
+/// Throws pear::io::ParseError naming the file on any problem, the input's own included.
+gis::Read read_input(const Input& input, const io::ReadOptions& options, std::size_t gzip_limit,
+                     const gis::LayerChoice& choice = {});
+
+/// read_input for the formats pear reads itself.
+io::ReadResult read_own_format(const Input& input, const io::ReadOptions& options,
+                               std::size_t gzip_limit);
 
 /// The warnings for what a read skipped, one a geometry ("FILE:LINE:COL: feature K: skipped a
 /// LineString (not a polygon)"), at most `limit` and then one line counting the rest.
+/// `layer`: read through GDAL, where a place is a feature number, not a line or byte.
 std::vector<std::string> skipped_warnings(const std::string& file, const io::ReadResult& result,
-                                          std::size_t limit = 10);
+                                          bool layer, std::size_t limit = 10);
 
 /// Progress on stderr, only when it is a terminal and there are many files; then a summary.
 class Progress {

@@ -30,19 +30,30 @@ constexpr FormatName formats[] = {{"obj", OutputFormat::obj, ".obj"},
                                   {"node", OutputFormat::node, ".node"},
                                   {"svg", OutputFormat::svg, ".svg"}};
 
-std::optional<OutputFormat> format_of(const std::string& path) {
+/// By the extension: pear's own formats first, then a GDAL driver that claims it.
+std::optional<FormatChoice> format_of(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
-  if (ext == ".json") return OutputFormat::geojson;
-  if (ext == ".ele") return OutputFormat::node;
+  if (ext == ".json") return FormatChoice{OutputFormat::geojson, {}};
+  if (ext == ".ele") return FormatChoice{OutputFormat::node, {}};
   for (const FormatName& f : formats)
-    if (f.extension == ext) return f.format;
+    if (f.extension == ext) return FormatChoice{f.format, {}};
+  if (gis::available())
+    if (auto driver = gis::driver_for_extension(ext))
+      return FormatChoice{OutputFormat::gdal, *driver};
   return std::nullopt;
 }
 
-std::string_view extension(OutputFormat format) {
+std::string extension(const OutputPlan& plan) {
+  if (*plan.format == OutputFormat::gdal) return gis::extension_of_driver(plan.driver);
   for (const FormatName& f : formats)
-    if (f.format == format) return f.extension;
+    if (f.format == *plan.format) return std::string(f.extension);
   return "";
+}
+
+/// The formats --format knows, for messages.
+std::string known_formats() {
+  return gis::available() ? "obj, geojson, node, svg, or a GDAL vector driver such as GPKG"
+                          : "obj, geojson, node, svg";
 }
 
 // input.json.gz -> input, input.wkb.hex -> input; "-" -> stdin.
@@ -56,9 +67,8 @@ std::string stem(const std::string& input) {
 
 /// The files write_output writes for one input: one, or two for the node format.
 std::vector<fs::path> output_files(const OutputPlan& plan, const std::string& input) {
-  fs::path path = plan.directory
-                      ? fs::path(plan.path) / (stem(input) + std::string(extension(*plan.format)))
-                      : fs::path(plan.path);
+  fs::path path =
+      plan.directory ? fs::path(plan.path) / (stem(input) + extension(plan)) : fs::path(plan.path);
   if (*plan.format != OutputFormat::node) return {path};
   path.replace_extension();  // out.node or out.ele -> out.node and out.ele
   return {fs::path(path).concat(".node"), fs::path(path).concat(".ele")};
@@ -128,18 +138,22 @@ void write(OutputFormat format, std::ostream& out, const std::string& input,
       break;
     case OutputFormat::node:
       throw std::runtime_error("the node format needs two files, not stdout");
+    case OutputFormat::gdal:
+      throw std::runtime_error("a GDAL format is written to a file, not stdout");
   }
 }
 
 }  // namespace
 
-OutputFormat parse_output_format(std::string_view name) {
+FormatChoice parse_output_format(std::string_view name) {
   for (const FormatName& f : formats)
-    if (f.name == name) return f.format;
-  throw UsageError("unknown --format '" + std::string(name) + "' (known: obj, geojson, node, svg)");
+    if (f.name == name) return {f.format, {}};
+  if (gis::available() && gis::is_writable_driver(std::string(name)))
+    return {OutputFormat::gdal, std::string(name)};
+  throw UsageError("unknown --format '" + std::string(name) + "' (known: " + known_formats() + ")");
 }
 
-OutputPlan plan_output(const std::optional<std::string>& output, std::optional<OutputFormat> format,
+OutputPlan plan_output(const std::optional<std::string>& output, std::optional<FormatChoice> format,
                        std::span<const Input> inputs) {
   OutputPlan plan;
   if (!output) {
@@ -151,19 +165,22 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<O
   plan.directory = plan.path.ends_with('/') || fs::is_directory(plan.path, error);
   if (plan.path == "-") {
     if (!format) throw UsageError("-o - (stdout) needs --format");
-    if (*format == OutputFormat::node)
+    if (format->format == OutputFormat::node)
       throw UsageError("--format node writes two files; give -o FILE");
+    if (format->format == OutputFormat::gdal)
+      throw UsageError("--format " + format->driver + " writes a file; give -o FILE");
   } else if (!plan.directory) {
     if (inputs.size() > 1)
       throw UsageError("-o FILE takes one input; for several, give a directory (ending in '/')");
     if (!format) format = format_of(plan.path);
     if (!format)
       throw UsageError("cannot tell the format of '" + plan.path +
-                       "' from its extension; give --format obj|geojson|node|svg");
+                       "' from its extension; give --format (" + known_formats() + ")");
   } else if (!format) {
-    throw UsageError("-o DIRECTORY needs --format obj|geojson|node|svg");
+    throw UsageError("-o DIRECTORY needs --format (" + known_formats() + ")");
   }
-  plan.format = format;
+  plan.format = format->format;
+  plan.driver = format->driver;
   if (plan.path == "-") return plan;
   check_collisions(plan, inputs);
   if (plan.directory && !fs::create_directories(plan.path, error) && error)
@@ -172,7 +189,8 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<O
 }
 
 void write_output(const OutputPlan& plan, const std::string& input,
-                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid) {
+                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid,
+                  const gis::Source* source, const std::string& layer_name) {
   const OutputFormat format = *plan.format;
   if (plan.path == "-") {
     write(format, std::cout, input, results, srid);
@@ -180,6 +198,9 @@ void write_output(const OutputPlan& plan, const std::string& input,
     return;
   }
   const std::vector<fs::path> files = output_files(plan, input);
+  if (format == OutputFormat::gdal)
+    return gis::write(files[0].string(), plan.driver, layer_name.empty() ? stem(input) : layer_name,
+                      results, source, srid);
   if (format == OutputFormat::node) {
     std::ofstream node = open(files[0]);
     std::ofstream ele = open(files[1]);

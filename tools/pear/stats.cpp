@@ -57,8 +57,11 @@ int run_stats(std::span<const std::string_view> arguments) {
   for (const Input& input : inputs) {
     const std::string& file = input.name;
     try {
-      const io::ReadResult result = read_input(input, read, gzip_limit);
-      for (const std::string& warning : skipped_warnings(file, result)) progress.message(warning);
+      const gis::Read gis_read = read_input(input, read, gzip_limit);
+      const io::ReadResult& result = gis_read.read;
+      if (!gis_read.note.empty()) progress.message(gis_read.note);
+      for (const std::string& warning : skipped_warnings(file, result, gis_read.source != nullptr))
+        progress.message(warning);
       std::vector<Polygon> polygons;
       for (const io::Feature& feature : result.features) polygons.push_back(feature.polygon);
       if (polygons.empty()) throw io::ParseError(file, 0, 0, 0, "no polygon in it");

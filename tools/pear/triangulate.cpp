@@ -27,7 +27,8 @@ struct Settings {
   io::ReadOptions read;
   std::size_t gzip_limit = default_gzip_limit;
   std::optional<std::string> output;
-  std::optional<OutputFormat> format;
+  std::optional<FormatChoice> format;
+  gis::LayerChoice layer;
   std::vector<std::string_view> inputs;
 };
 
@@ -43,7 +44,9 @@ Triangle's .poly, WKB or EWKB (.wkb: one value; .hexwkb, .wkb.hex: hex, a value 
 of them gzipped (.gz); '-' reads stdin. Directories are searched for such files; quoted globs
 are expanded. Points and lines among the polygons are skipped, each named on stderr. GeoJSON
 output keeps each feature's properties (pear's own under "pear") and the SRID; GeoJSON and
-OBJ keep z (docs/cli.md).
+OBJ keep z (docs/cli.md). Built with GDAL, pear also reads any OGR vector file (GeoPackage,
+Shapefile, FlatGeobuf, ...: every file whose extension is not pear's own that GDAL opens) and
+writes a layer with one feature per input feature, its attributes, FID and CRS.
 
 options:
   --algorithm NAME    which triangulation algorithm (default auto):
@@ -63,7 +66,11 @@ options:
                       existing one, or a name ending in '/') for one output per input, named
                       after it; '-' for stdout. Two inputs that would write the same file, or
                       an output that would overwrite an input, are a usage error
-  --format F          obj, geojson, node (.node + .ele) or svg; else guessed from OUT's extension
+  --format F          obj, geojson, node (.node + .ele) or svg, or (built with GDAL) a GDAL
+                      vector driver: GPKG, "ESRI Shapefile", FlatGeobuf, ...; else guessed from
+                      OUT's extension (.gpkg, .shp, .fgb and any a GDAL driver claims)
+  --layer NAME        the layer of a GDAL input (default: its first)
+  --where SQL         an OGR attribute filter on a GDAL input's features
   --keep-small-rings  accept rings of fewer than 3 points (as earcut's fixtures have); the
                       engine drops such holes
   --gzip-limit SIZE   a .gz that inflates past SIZE bytes (K, M, G: KiB, MiB, GiB) is refused
@@ -108,6 +115,10 @@ Settings parse(std::span<const std::string_view> arguments) {
       s.format = parse_output_format(args.value());
     } else if (option == "--gzip-limit") {
       s.gzip_limit = args.byte_size();
+    } else if (option == "--layer" || option == "--where") {
+      if (!gis::available())
+        throw UsageError(std::string(*option) + " needs a pear built with GDAL");
+      (option == "--layer" ? s.layer.layer : s.layer.where) = std::string(args.value());
     } else {
       args.unknown();
     }
@@ -214,8 +225,8 @@ class Group {
   /// Vertices past which the group is triangulated before more files are read.
   static constexpr std::size_t vertex_budget = std::size_t{1} << 20;
 
-  void add(std::string file, io::ReadResult read) {
-    for (const io::Feature& feature : read.features)
+  void add(std::string file, gis::Read read) {
+    for (const io::Feature& feature : read.read.features)
       for (const Ring& ring : feature.polygon) vertices_ += ring.size();
     files_.push_back({std::move(file), std::move(read)});
   }
@@ -234,7 +245,7 @@ class Group {
     std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
     coordinates.reserve(2 * vertices_);
     for (const File& f : files_) {
-      for (const io::Feature& feature : f.read.features) {
+      for (const io::Feature& feature : f.read.read.features) {
         for (const Ring& ring : feature.polygon) {
           for (const Point& p : ring) coordinates.insert(coordinates.end(), {p.x, p.y});
           ring_offsets.push_back(static_cast<std::int64_t>(coordinates.size() / 2));
@@ -266,18 +277,20 @@ class Group {
     std::size_t p = 0;
     for (File& f : files_) {
       // What the read skipped, said here to stay in the order of the files.
-      for (const std::string& warning :
-           skipped_warnings(f.name == "-" ? "<stdin>" : f.name, f.read))
+      if (!f.read.note.empty()) progress.message(f.read.note);
+      for (const std::string& warning : skipped_warnings(f.name == "-" ? "<stdin>" : f.name,
+                                                         f.read.read, f.read.source != nullptr))
         progress.message(warning);
       try {
         std::vector<io::TriangulatedPolygon> results;
-        for (std::size_t i = 0; i < f.read.features.size(); ++i, ++p) {
-          results.push_back(report_one(s, f.read.features[i],
+        for (std::size_t i = 0; i < f.read.read.features.size(); ++i, ++p) {
+          results.push_back(report_one(s, f.read.read.features[i],
                                        take(batch, profile, p, ring_offsets, polygon_offsets),
                                        f.name, i, totals, progress));
           ++totals.polygons;
         }
-        if (plan.format) write_output(plan, f.name, results, f.read.srid);
+        if (plan.format)
+          write_output(plan, f.name, results, f.read.read.srid, f.read.source.get(), f.read.layer);
       } catch (const std::bad_alloc&) {
         fail(f.name + ": out of memory while reporting or writing it");
       } catch (const std::exception& e) {  // an unwritable output, named with the reason
@@ -292,7 +305,7 @@ class Group {
  private:
   struct File {
     std::string name;
-    io::ReadResult read;
+    gis::Read read;
   };
 
   void clear() {
@@ -333,10 +346,10 @@ int run_triangulate(std::span<const std::string_view> arguments) {
   Group group;
   for (const Input& input : inputs) {
     std::string problem;
-    io::ReadResult read;
+    gis::Read read;
     try {
-      read = read_input(input, s.read, s.gzip_limit);
-      if (read.features.empty()) problem = display_name(input) + ": no polygon in it";
+      read = read_input(input, s.read, s.gzip_limit, s.layer);
+      if (read.read.features.empty()) problem = display_name(input) + ": no polygon in it";
     } catch (const io::ParseError& e) {  // naming the place
       problem = e.what();
     } catch (const std::bad_alloc&) {
