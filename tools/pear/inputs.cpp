@@ -186,6 +186,12 @@ gis::Read read_input(const Input& input, const io::ReadOptions& options, std::si
   const std::string& name = input.name;
   if (!input.problem.empty()) throw io::ParseError(name, 0, 0, 0, input.problem);
   if (gis::reads(name)) return gis::read(name, choice, options);
+  if (!gis::available())
+    for (const char* ext : {".gpkg", ".shp", ".fgb", ".parquet", ".gml", ".kml", ".sqlite"})
+      if (name.ends_with(ext))
+        throw io::ParseError(name, 0, 0, 0,
+                             std::string("this pear was built without GDAL and cannot read ") +
+                                 ext + " files (build with libgdal-dev, Meson option gdal)");
   if (choice.layer || choice.where)
     throw io::ParseError(name, 0, 0, 0,
                          "--layer and --where apply to files read through GDAL, not to this one");
