@@ -161,7 +161,6 @@ Header read_header(Cursor& cursor) {
 /// it has none.
 template <class Sink>
 void read_polygon_body(Cursor& cursor, const Header& header, Sink& sink) {
-  const std::uint32_t dimensions = header.dimensions;
   const std::size_t count_offset = cursor.offset();
   const std::uint32_t rings = cursor.read_uint32("a ring count");
   if (rings > cursor.left() / 4)
