@@ -13,7 +13,7 @@ export CXX="${CXX:-g++}"
 
 if [[ ! -f "$build/build.ninja" ]]; then
   meson setup "$build" "$root" \
-    -Db_sanitize=thread -Db_lundef=false -Dbuildtype=debugoptimized \
+    -Db_sanitize=thread -Db_lundef=false -Doptimization=2 -Ddebug=false -Dcpp_args=-g1 \
     -Dbench=disabled -Dcli=disabled -Dtests=enabled -Dfuzz=disabled
 fi
 ninja -C "$build" -j"${JOBS:-2}" \

@@ -14,13 +14,14 @@ target=${1:?usage: fuzz/run.sh TARGET SECONDS [libFuzzer options]}
 seconds=${2:?usage: fuzz/run.sh TARGET SECONDS [libFuzzer options]}
 shift 2
 build=${FUZZ_BUILD:-build-fuzz}
-if [[ ! -f $build/build.ninja ]]; then
-  CC=clang CXX=clang++ meson setup "$build" -Dfuzz=enabled -Dtests=disabled -Dbench=disabled \
-    -Dcli=disabled -Db_sanitize=address,undefined -Db_lundef=false >/dev/null
-fi
-# One build at a time in the build folder, so that several targets can be started at once.
-# ninja's output only when the build fails: it names the error on stdout.
-if ! log=$(flock "$build/.fuzz-build.lock" ninja -C "$build" -j"${JOBS:-2}" "fuzz/fuzz_$target" 2>&1); then
+# One set-up and build at a time in the build folder, so that several targets can be started at
+# once; meson and ninja name their errors on stdout, shown only when they fail.
+mkdir -p "$build"
+if ! log=$(flock "$build/.fuzz-build.lock" bash -c '
+    [[ -f $1/build.ninja ]] ||
+      CC=clang CXX=clang++ meson setup "$1" -Dfuzz=enabled -Dtests=disabled -Dbench=disabled \
+        -Dcli=disabled -Dpython=disabled -Db_sanitize=address,undefined -Db_lundef=false
+    ninja -C "$1" -j"$2" "fuzz/fuzz_$3"' _ "$build" "${JOBS:-2}" "$target" 2>&1); then
   printf '%s\n' "$log" >&2
   exit 1
 fi
