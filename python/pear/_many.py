@@ -195,10 +195,11 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
     scheduler, the GIL released; returns a BatchResult. Never raises for bad geometry: each
     polygon has a status (BatchResult.check() raises as triangulate would).
 
-    data: an (N, 2) float64 array (or (N, 3): z kept, x and y triangulated) with integer ring_offsets and polygon_offsets (shapely 2's
-    to_ragged_array layout: ``triangulate_many(coords, *offsets)``; geometry_offsets for
-    MultiPolygons); or a sequence of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or
-    MultiPolygon, any byte order, ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.
+    data: an (N, 2) float64 array (or (N, 3): z kept, x and y triangulated) with integer
+    ring_offsets and polygon_offsets (shapely 2's to_ragged_array layout:
+    ``triangulate_many(coords, *offsets)``; geometry_offsets for MultiPolygons); or a sequence
+    of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or MultiPolygon, any byte order,
+    ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.
     Options as for triangulate; threads=0 uses every hardware thread.
     """
     options = dict(algorithm=algorithm, heuristic=heuristic, delaunay=delaunay, threads=threads,
