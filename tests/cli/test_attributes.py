@@ -12,11 +12,10 @@ import re
 import struct
 import subprocess
 import sys
-import tempfile
-import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import corpus  # noqa: E402 (tests/support)
+from scratch import ScratchTest  # noqa: E402 (tests/support)
 
 PEAR = None
 SOUTH_AFRICA = str(corpus.bundled_root() / "countries" / "south_africa_000.json")
@@ -62,16 +61,7 @@ def collection():
         {"type": "Feature", "properties": p, "geometry": g} for p, g in zip(PROPERTIES, geometries)]}
 
 
-class Attributes(unittest.TestCase):
-    def setUp(self):
-        self.dir = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.dir.cleanup()
-
-    def path(self, name):
-        return os.path.join(self.dir.name, name)
-
+class Attributes(ScratchTest):
     def write(self, name, data):
         with open(self.path(name), "wb" if isinstance(data, bytes) else "w") as f:
             f.write(data)

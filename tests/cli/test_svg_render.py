@@ -17,12 +17,12 @@ import re
 import shutil
 import subprocess
 import sys
-import tempfile
 import time
 import unittest
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "support"))
 import corpus  # noqa: E402 (tests/support)
+from scratch import ScratchTest  # noqa: E402 (tests/support)
 
 try:
     import numpy as np
@@ -124,16 +124,7 @@ def erode(mask, radius):
     return out
 
 
-class Render(unittest.TestCase):
-    def setUp(self):
-        self.dir = tempfile.TemporaryDirectory()
-
-    def tearDown(self):
-        self.dir.cleanup()
-
-    def path(self, name):
-        return os.path.join(self.dir.name, name)
-
+class Render(ScratchTest):
     def svg_of(self, polygon_file):
         svg = self.path("picture.svg")
         result = subprocess.run([PEAR, "triangulate", str(polygon_file), "-o", svg],
