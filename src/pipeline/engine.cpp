@@ -65,6 +65,13 @@ void Engine::check(bool find_crossings, const RunContext& ctx) {
   // Parallel on ctx's runner for large polygons; records its phases in the profile.
   verdict_ = simplicity_.check(clean_, ctx, find_crossings);
   if (!verdict_.violation) return;
+  // A crossing at the smallest edge in conflict: no split makes the polygon simple, and the
+  // T-junction sweep (most of a not-simple polygon's check) is not needed to say so.
+  if (simplicity_.unresolvable_conflict_at(clean_, *verdict_.violation, ctx)) {
+    found(Issue::not_simple, clean_.original[*verdict_.violation]);
+    verdict_.touching = Verdict::Touching::unknown;
+    return;
+  }
   if (const auto left = split_t_junctions(ctx, *verdict_.violation)) {
     found(Issue::not_simple, clean_.original[*left]);
     verdict_.touching = Verdict::Touching::unknown;  // a crossing may hide a touching pair

@@ -151,6 +151,15 @@ TJunctionSearch SimplicityCheck::find_t_junctions(const CleanPolygon& polygon,
   return search;
 }
 
+bool SimplicityCheck::unresolvable_conflict_at(const CleanPolygon& polygon, std::uint32_t e,
+                                               const RunContext& ctx) {
+  index_edges(polygon, ctx);
+  std::vector<TJunction> junctions;  // the T-junctions e takes part in: not asked for here
+  for (std::uint32_t f = 0; f < edges_.size(); ++f)
+    if (!edges_.t_junctions(e, f, junctions)) return true;
+  return false;
+}
+
 /// The ring's edges as maximal runs along which x never reverses (vertical edges join the run
 /// they are in), each run's edges listed in increasing x. Within a run, edges that are not
 /// neighbours cannot meet: their x-ranges are apart, or touch only across a run of vertical

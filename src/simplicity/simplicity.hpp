@@ -169,6 +169,13 @@ class SimplicityCheck {
   TJunctionSearch find_t_junctions(const CleanPolygon& polygon, const RunContext& ctx,
                                    Method method = Method::automatic);
 
+  /// Whether edge `e` (the first vertex's index, as find_violation gives it) is in a conflict
+  /// that no split at a T-junction resolves: it crosses, overlaps or folds back over another
+  /// edge. Then the polygon is not simple whatever find_t_junctions would find, and its sweep
+  /// need not run. One pass over the edges' boxes.
+  bool unresolvable_conflict_at(const CleanPolygon& polygon, std::uint32_t e,
+                                const RunContext& ctx);
+
  private:
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
   Verdict check_all_pairs(const CleanPolygon& polygon, bool find_crossings);
