@@ -150,9 +150,12 @@ void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, con
     prev[next[k]] = prev[k];
     look.insert(look.end(), {prev[k], next[k]});
   };
-  while (left >= 3 && !look.empty()) {
-    std::sort(look.begin(), look.end());
-    look.erase(std::unique(look.begin(), look.end()), look.end());
+  // The first round looks at every point, already in order: only later rounds sort.
+  for (bool first_round = true; left >= 3 && !look.empty(); first_round = false) {
+    if (!first_round) {
+      std::sort(look.begin(), look.end());
+      look.erase(std::unique(look.begin(), look.end()), look.end());
+    }
     tips.clear();
     for (std::uint32_t k : look)
       if (alive[k] && folds_back(at(prev[k]), at(k), at(next[k]))) tips.push_back(k);
