@@ -94,6 +94,21 @@ class Reference {
           return true;
     return false;
   }
+  /// Whether edge e crosses, overlaps or folds back over another edge: a violation that is
+  /// not one end lying strictly inside the other edge (a T-junction, which a split repairs).
+  bool unresolvable_at(std::uint32_t e) const {
+    for (std::uint32_t f = 0; f < pts_.size(); ++f) {
+      if (f == e || !violate(e, f)) continue;
+      const Point &a = pts_[e], &b = pts_[next_[e]], &c = pts_[f], &d = pts_[next_[f]];
+      const double o1 = orient2d(a, b, c), o2 = orient2d(a, b, d);
+      const double o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+      const bool collinear = o1 == 0 && o2 == 0;
+      const bool proper = o1 * o2 < 0 && o3 * o4 < 0;
+      const bool share = a == c || a == d || b == c || b == d;
+      if (collinear || proper || share) return true;
+    }
+    return false;
+  }
   /// Whether edge e takes part in a violation.
   bool involved(std::uint32_t e) const {
     for (std::uint32_t f = 0; f < pts_.size(); ++f)
@@ -434,6 +449,30 @@ TEST(Simplicity, TJunctionsAgreeWithBruteForce) {
   }
   EXPECT_GT(junctions, 500) << "T-junctions only";  // both outcomes were exercised
   EXPECT_GT(conflicts, 500);
+}
+
+/// unresolvable_conflict_at agrees with the reference on the edge find_violation reports, and
+/// where it says no split helps, the T-junction sweep it spares stops at a conflict too (the
+/// engine's answer, not_simple, is the same either way).
+TEST(Simplicity, UnresolvableConflictAgreesWithReferenceAndSweep) {
+  std::mt19937 rng(2026);
+  SimplicityCheck check;
+  int unresolvable = 0, resolvable = 0;
+  for (int round = 0; round < 4000; ++round) {
+    const CleanPolygon polygon =
+        round % 2 ? touching_holes(rng)
+                  : random_polygon(rng, 1 + round % 3, 3 + round % 9, 2 + round % 6);
+    if (polygon.ring_count() == 0 || polygon.points.size() < 3) continue;
+    const auto violation = check.find_violation(polygon, RunContext{});
+    if (!violation) continue;
+    SCOPED_TRACE("round " + std::to_string(round));
+    const bool expected = Reference(polygon).unresolvable_at(*violation);
+    ASSERT_EQ(check.unresolvable_conflict_at(polygon, *violation, RunContext{}), expected);
+    if (expected) EXPECT_TRUE(check.find_t_junctions(polygon, RunContext{}).conflict.has_value());
+    ++(expected ? unresolvable : resolvable);
+  }
+  EXPECT_GT(unresolvable, 300);  // both outcomes were exercised
+  EXPECT_GT(resolvable, 300);
 }
 
 /// Every corpus polygon up to 400k vertices (the largest coastline, 1.5M, is left to the
