@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <numeric>
 
 namespace pear::detail {
 std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary) {
@@ -14,7 +15,11 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
   }
-  frame_.fit(lo, hi, polygon.points.size() / 2 + 1);
+  // Each hole's ray and visibility search reads the cells it crosses. With few holes one cell
+  // is cheapest: a few scans of the edges cost less than placing them in a fine grid (a glyph
+  // with two holes spent a tenth of its run building one).
+  const std::size_t holes = rings - 1;
+  frame_.fit(lo, hi, holes <= few_holes ? 1 : polygon.points.size() / 2 + 1);
   build_grid(static_cast<std::uint32_t>(polygon.points.size()));
   merge_ring(polygon.ring_starts[0]);
 
@@ -48,10 +53,31 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   return unjoined;
 }
 
-/// Every ring's nodes and edges into the grid by counting: (cell, item) pairs listed once,
-/// cells counted, offsets summed, then filled. Edge v runs from node v (the rings are linked as
+/// Every ring's nodes and edges into the grid. Edge v runs from node v (the rings are linked as
 /// cycles, nothing spliced yet).
 void HoleBridger::build_grid(std::uint32_t nodes) {
+  const std::size_t cells = frame_.cell_count();
+  if (cells == 1) {  // every node and edge in the one cell, in order: nothing to count
+    for (CellLists* lists : {&node_cells_, &edge_cells_}) {
+      lists->start = {0, nodes};
+      lists->head.assign(1, UINT32_MAX);
+      lists->added.clear();
+      lists->items.resize(nodes);
+      std::iota(lists->items.begin(), lists->items.end(), 0u);
+    }
+  } else {
+    fill_cells(nodes);
+  }
+  edge_start_.resize(nodes);
+  out_edge_.resize(nodes);
+  for (std::uint32_t v = 0; v < nodes; ++v) edge_start_[v] = out_edge_[v] = v;
+  node_merged_.assign(nodes, 0);
+  edge_merged_.assign(nodes, 0);
+}
+
+/// The nodes' and edges' cells by counting: (cell, item) pairs listed once, cells counted,
+/// offsets summed, then filled.
+void HoleBridger::fill_cells(std::uint32_t nodes) {
   const std::size_t cells = frame_.cell_count();
   const auto fill = [&](CellLists& lists) {
     lists.start.assign(cells + 1, 0);
@@ -77,11 +103,6 @@ void HoleBridger::build_grid(std::uint32_t nodes) {
       pairs_.push_back({static_cast<std::uint32_t>(cell), v});
     });
   fill(edge_cells_);
-  edge_start_.resize(nodes);
-  out_edge_.resize(nodes);
-  for (std::uint32_t v = 0; v < nodes; ++v) edge_start_[v] = out_edge_[v] = v;
-  node_merged_.assign(nodes, 0);
-  edge_merged_.assign(nodes, 0);
 }
 
 std::uint32_t HoleBridger::leftmost_node(std::uint32_t first) const {

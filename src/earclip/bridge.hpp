@@ -13,12 +13,16 @@ namespace pear::detail {
 
 /// Joins the holes one by one, in order of their leftmost vertex, each to a vertex visible to
 /// the left of it (Eberly's ray method). Rays and visibility run on a uniform grid of the
-/// merged edges and nodes, so the cost stays near-linear with 100,000 holes. Every ring's
+/// merged edges and nodes, so the cost stays near-linear with 100,000 holes (with few holes,
+/// one cell: scans). Every ring's
 /// nodes and edges enter the grid at once, in arrays filled by counting (no allocation per
 /// cell); a hole's only count once it is merged, and the few nodes and edges that bridges add
 /// go to per-cell lists beside them.
 class HoleBridger {
  public:
+  /// Up to this many holes the grid is one cell: each hole scans every edge and node.
+  static constexpr std::size_t few_holes = 4;
+
   /// `boundary` holds one node per clean vertex, each ring already linked as a cycle.
   /// Returns the leftmost node of every hole it could not join (nothing lies to its left: the
   /// hole is outside the outer ring, so the input is not a valid polygon).
@@ -50,6 +54,7 @@ class HoleBridger {
   };
 
   void build_grid(std::uint32_t nodes);
+  void fill_cells(std::uint32_t nodes);
   void merge_ring(std::uint32_t first_node);
   void insert_node(std::uint32_t node);
   std::uint32_t insert_edge(std::uint32_t start);

@@ -19,14 +19,14 @@ struct GridFrame {
   double y_slack = 0;  ///< bounds the rounding of a row's band edges (y0 + r / inv_h)
   int nx = 1, ny = 1;
 
-  /// About `target_cells` square-ish cells over [min, max].
+  /// About `target_cells` square-ish cells over [min, max]; exactly one for 1.
   void fit(Point min, Point max, std::size_t target_cells) {
     x0 = min.x;
     y0 = min.y;
     const double w = max.x - min.x, h = max.y - min.y;
     y_slack = 32 * std::numeric_limits<double>::epsilon() * (std::abs(min.y) + std::abs(max.y));
     const double cells = static_cast<double>(std::max<std::size_t>(1, target_cells));
-    double side = std::sqrt(std::max(w * h, 0.0) / cells);
+    double side = target_cells <= 1 ? std::max(w, h) : std::sqrt(std::max(w * h, 0.0) / cells);
     if (!(side > 0)) side = std::max(w, h) / cells;
     if (!(side > 0)) side = 1;
     nx = static_cast<int>(std::clamp(std::ceil(w / side), 1.0, 16384.0));
