@@ -100,12 +100,15 @@ struct GridFrame {
     }
   };
 
-  /// Calls visit(cell) for every cell the segment a-c passes through, and for the neighbouring
-  /// cell on each side in its row (a margin for rounding): every point of the segment lies in
-  /// one of the visited cells.
+  /// Calls visit(cell) for every cell the segment a-c passes through, and, where it crosses
+  /// rows, for the neighbouring cell on each side in each row (a margin for the rounding of
+  /// where it enters and leaves the row): every point of the segment lies in one of the
+  /// visited cells. Within one row the ends' own columns bound it exactly (column() is
+  /// monotone), so a short edge enters one or two cells, not three or four.
   template <class Visit>
   void for_each_cell_on_segment(Point a, Point c, Visit&& visit) const {
     const int r0 = row(std::min(a.y, c.y)), r1 = row(std::max(a.y, c.y));
+    const int margin = r0 != r1;
     for (int r = r0; r <= r1; ++r) {
       double xa = a.x, xc = c.x;
       if (r0 != r1 && inv_h > 0) {  // the part of the segment inside row r's band
@@ -116,8 +119,8 @@ struct GridFrame {
         xa = x_at(y0 + r / inv_h);
         xc = x_at(y0 + (r + 1) / inv_h);
       }
-      const int c0 = std::max(0, column(std::min(xa, xc)) - 1);
-      const int c1 = std::min(nx - 1, column(std::max(xa, xc)) + 1);
+      const int c0 = std::max(0, column(std::min(xa, xc)) - margin);
+      const int c1 = std::min(nx - 1, column(std::max(xa, xc)) + margin);
       for (int col = c0; col <= c1; ++col) visit(cell(col, r));
     }
   }
