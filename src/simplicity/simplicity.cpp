@@ -321,16 +321,25 @@ Verdict SimplicityCheck::check_chains(const CleanPolygon& polygon, bool find_cro
     visit_pair(edges_, e, f, find_crossings, smallest, touching);
   };
   // For each edge of the run that starts first, a window of the other run's edges (both in
-  // increasing x).
+  // increasing x). Along a run both ends of the edges' x-ranges only grow: its edges that end
+  // before the other run starts are skipped by a binary search, and those that start after it
+  // ends are not looked at.
   monotone_chains(polygon);
+  const auto chain_edges = [&](const Chain& c) {
+    return std::span(chain_order_).subspan(c.begin, c.end - c.begin);
+  };
   for (std::size_t i = 0; i < chains_.size(); ++i) {
+    const auto run = chain_edges(chains_[i]);
     for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
-      std::uint32_t window = chains_[j].begin;
-      for (std::uint32_t k = chains_[i].begin; k < chains_[i].end; ++k) {
-        const std::uint32_t e = chain_order_[k];
-        while (window < chains_[j].end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
-        for (std::uint32_t m = window;
-             m < chains_[j].end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
+      const Chain& other = chains_[j];
+      std::uint32_t window = other.begin;
+      const auto first = std::partition_point(
+          run.begin(), run.end(), [&](std::uint32_t e) { return boxes[e].x1 < other.x0; });
+      for (auto it = first; it != run.end() && boxes[*it].x0 <= other.x1; ++it) {
+        const std::uint32_t e = *it;
+        while (window < other.end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
+        for (std::uint32_t m = window; m < other.end && boxes[chain_order_[m]].x0 <= boxes[e].x1;
+             ++m)
           visit(e, chain_order_[m]);
       }
     }
