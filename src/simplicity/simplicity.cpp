@@ -354,10 +354,23 @@ Verdict SimplicityCheck::check_chains(const CleanPolygon& polygon, bool find_cro
   return verdict_of(smallest, touching);
 }
 
+/// clean_polygon leaves no point equal to the next, so two edges that are not neighbours share
+/// an end exactly when two vertices share a position: sorted, they are next to each other.
+bool SimplicityCheck::repeats_a_position(const CleanPolygon& polygon) {
+  sorted_points_.assign(polygon.points.begin(), polygon.points.end());
+  std::sort(sorted_points_.begin(), sorted_points_.end(),
+            [](const Point& p, const Point& q) { return lexicographic_less(p, q); });
+  return std::adjacent_find(sorted_points_.begin(), sorted_points_.end()) != sorted_points_.end();
+}
+
 Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ctx,
                                bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   Verdict verdict;
+  if (!find_crossings && n <= chains_limit) {
+    verdict.touching = repeats_a_position(polygon) ? Verdict::Touching::yes : Verdict::Touching::no;
+    return verdict;
+  }
   if (n > chains_limit) {
     // Parallel on ctx's runner; records its own phases in the profile.
     if (find_crossings) verdict.violation = find_violation(polygon, ctx);

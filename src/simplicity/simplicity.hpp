@@ -147,8 +147,8 @@ class SimplicityCheck {
   static constexpr std::uint32_t chains_limit = 384;
 
   /// The check, by the strategy that suits the size. `find_crossings` false asks only whether
-  /// rings touch (no orientation tests), for runs that skip the check; beyond chains_limit
-  /// that is not asked at all (unknown).
+  /// rings touch (no orientation tests), for runs that skip the check: whether a position
+  /// repeats (a sort); beyond chains_limit that is not asked at all (unknown).
   Verdict check(const CleanPolygon& polygon, const RunContext& ctx, bool find_crossings);
 
   /// `grid_only` (never a sweep, tiny cells: every level of the grid is exercised) and
@@ -178,6 +178,7 @@ class SimplicityCheck {
 
  private:
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
+  bool repeats_a_position(const CleanPolygon& polygon);
   Verdict check_all_pairs(const CleanPolygon& polygon, bool find_crossings);
   Verdict check_chains(const CleanPolygon& polygon, bool find_crossings);
   void monotone_chains(const CleanPolygon& polygon);
@@ -195,6 +196,7 @@ class SimplicityCheck {
   std::vector<Chain> chains_;
   std::vector<std::uint32_t> chain_order_;
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
+  std::vector<Point> sorted_points_;    ///< repeats_a_position's copy
 
   /// check_all_pairs' edge boxes, a column per side (padded for four-wide loads), and the
   /// pairs to test as rows (geometry/box_scan.hpp).
