@@ -18,9 +18,13 @@ constexpr std::size_t min_triangles_per_set = 256;
 
 /// Lawson's algorithm needs at most n(n-1)/2 flips on n vertices (an edge, once flipped away,
 /// never comes back); a budget of that many keeps garbage from looping forever.
+/// Counted in 64 bits and saturated: size_t has 32 on wasm32.
 std::size_t flip_budget(std::size_t vertices) {
-  if (vertices > (std::size_t{1} << 32)) return std::numeric_limits<std::size_t>::max();
-  return vertices * (vertices - 1) / 2 + 1;
+  const auto n = static_cast<std::uint64_t>(vertices);
+  if (n > (std::uint64_t{1} << 32)) return std::numeric_limits<std::size_t>::max();
+  const std::uint64_t flips = n * (n - 1) / 2 + 1;
+  return static_cast<std::size_t>(
+      std::min<std::uint64_t>(flips, std::numeric_limits<std::size_t>::max()));
 }
 
 /// Every interior edge once, in triangle order (the stack pops them in reverse).

@@ -12,6 +12,9 @@ constexpr std::size_t kept_footprint = 1 << 16;
 constexpr std::size_t kept_engines = 64;
 
 struct Pool {
+  // Room for every engine kept, made once: keeping one then never allocates, so release_engine
+  // needs no exception handler (none exists in builds without exceptions, such as WebAssembly).
+  Pool() { engines.reserve(kept_engines); }
   std::vector<std::unique_ptr<Engine>> engines;
 };
 
@@ -39,12 +42,8 @@ void release_engine(std::unique_ptr<Engine> engine) noexcept {
   if (!engine || engine->footprint() > kept_footprint) return;
   engine->workers().release();  // no threads kept in the pool
   Pool& p = pool();
-  try {
-    const PoolLock lock;
-    if (p.engines.size() < kept_engines) p.engines.push_back(std::move(engine));
-  } catch (...) {
-    // No room to keep it: it is freed, which is all keeping would have saved.
-  }
+  const PoolLock lock;
+  if (p.engines.size() < kept_engines) p.engines.push_back(std::move(engine));
 }
 
 }  // namespace pear::detail
