@@ -6,6 +6,10 @@
 #define PEAR_BOX_SCAN_X86 1
 #include <immintrin.h>
 #endif
+#if defined(__wasm_simd128__)
+#define PEAR_BOX_SCAN_WASM 1
+#include <wasm_simd128.h>
+#endif
 
 namespace pear::detail {
 namespace {
@@ -67,7 +71,7 @@ __attribute__((target("avx2"))) bool avx2_meets(const BoxColumns& c, std::uint32
 #endif
 
 /// The bits of [0, count), count <= 64.
-std::uint64_t first_bits(std::uint32_t count) {
+[[maybe_unused]] std::uint64_t first_bits(std::uint32_t count) {
   return count == 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << count) - 1;
 }
 
@@ -79,6 +83,39 @@ std::uint64_t scalar_in_box(const double* xs, const double* ys, std::uint32_t co
   }
   return in;
 }
+
+#if PEAR_BOX_SCAN_WASM
+/// WebAssembly's 128-bit SIMD (-msimd128): two boxes a step, as SSE2 does.
+bool wasm_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
+  const v128_t x0 = wasm_f64x2_splat(b.x0), x1 = wasm_f64x2_splat(b.x1);
+  const v128_t y0 = wasm_f64x2_splat(b.y0), y1 = wasm_f64x2_splat(b.y1);
+  v128_t any = wasm_f64x2_splat(0.0);
+  std::uint32_t f = from;
+  for (; f + 2 <= to; f += 2) {
+    const v128_t in_x = wasm_v128_and(wasm_f64x2_le(wasm_v128_load(&c.x0[f]), x1),
+                                      wasm_f64x2_le(x0, wasm_v128_load(&c.x1[f])));
+    const v128_t in_y = wasm_v128_and(wasm_f64x2_le(wasm_v128_load(&c.y0[f]), y1),
+                                      wasm_f64x2_le(y0, wasm_v128_load(&c.y1[f])));
+    any = wasm_v128_or(any, wasm_v128_and(in_x, in_y));
+  }
+  const bool tail = scalar_meets(c, f, to, b);
+  return wasm_v128_any_true(any) | tail;
+}
+
+/// Two points a step; the lanes past `count` read padding and are masked off.
+std::uint64_t wasm_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& b) {
+  const v128_t x0 = wasm_f64x2_splat(b.x0), x1 = wasm_f64x2_splat(b.x1);
+  const v128_t y0 = wasm_f64x2_splat(b.y0), y1 = wasm_f64x2_splat(b.y1);
+  std::uint64_t in = 0;
+  for (std::uint32_t i = 0; i < count; i += 2) {
+    const v128_t x = wasm_v128_load(xs + i), y = wasm_v128_load(ys + i);
+    const v128_t in_x = wasm_v128_and(wasm_f64x2_le(x0, x), wasm_f64x2_le(x, x1));
+    const v128_t in_y = wasm_v128_and(wasm_f64x2_le(y0, y), wasm_f64x2_le(y, y1));
+    in |= static_cast<std::uint64_t>(wasm_i64x2_bitmask(wasm_v128_and(in_x, in_y))) << i;
+  }
+  return in & first_bits(count);
+}
+#endif
 
 #if PEAR_BOX_SCAN_X86
 /// Whether `scan` asks for the best and the processor has AVX2 (asked once).
@@ -141,19 +178,25 @@ __attribute__((target("avx2"))) void avx2_rows(const BoxColumns& c, std::span<co
 }  // namespace
 
 void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
-                  std::span<std::uint64_t> meets, BoxScan scan) {
+                  std::span<std::uint64_t> meets, [[maybe_unused]] BoxScan scan) {
   std::fill(meets.begin(), meets.end(), 0);
 #if PEAR_BOX_SCAN_X86
   if (use_avx2(scan)) return avx2_rows(columns, rows, meets);
   if (scan != BoxScan::scalar) return rows_with(columns, rows, meets, sse2_meets);
 #endif
+#if PEAR_BOX_SCAN_WASM
+  if (scan != BoxScan::scalar) return rows_with(columns, rows, meets, wasm_meets);
+#endif
   rows_with(columns, rows, meets, scalar_meets);
 }
 
-PointsInBox points_in_box_function(BoxScan scan) {
+PointsInBox points_in_box_function([[maybe_unused]] BoxScan scan) {
 #if PEAR_BOX_SCAN_X86
   if (use_avx2(scan)) return avx2_in_box;
   if (scan != BoxScan::scalar) return sse2_in_box;
+#endif
+#if PEAR_BOX_SCAN_WASM
+  if (scan != BoxScan::scalar) return wasm_in_box;
 #endif
   return scalar_in_box;
 }

@@ -2,7 +2,8 @@
 // meets it (the simplicity check of few edges), and which of up to 64 points lie in a box (the
 // bit-set clipper's ear test). Most rows meet nothing (2% of the counties' rows do), so the cost
 // is the comparisons: four boxes a step with AVX2 where the processor has it (chosen at run
-// time), two with SSE2 (x86-64's baseline), one elsewhere, all without a branch on the data.
+// time), two with SSE2 (x86-64's baseline) or WebAssembly's SIMD128 (-msimd128), one elsewhere,
+// all without a branch on the data.
 // Intrinsics, not GCC's vector types, whose comparison masks GCC 12 takes apart lane by lane.
 // The columns are the caller's, sized for its own limits; they must be readable up to a
 // multiple of four entries (padding), since the lanes past the end are loaded and masked off.
