@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Builds js/pear.wasm: libpear without threads for wasm32-wasi with Debian's clang 14, lld and
+# wasi-libc (js/wasm32-wasi.ini), and the C ABI of js/wasm/exports.cpp.
+#   js/build.sh [--small] [BUILD_DIR]   (default BUILD_DIR: build-wasm at the repository root)
+# -O2 with link-time optimization by default; --small: -Oz, 40% smaller and 1.7x slower.
+# Exits 77 (a skip to the tests) when the toolchain is not installed (scripts/setup.sh installs it).
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+optimization=2
+if [[ ${1:-} == --small ]]; then
+  optimization=z
+  shift
+fi
+build=${1:-build-wasm}
+for tool in clang++-14 wasm-ld-14 llvm-ar-14; do
+  command -v "$tool" >/dev/null || { echo "js/build.sh: $tool not found (scripts/setup.sh)"; exit 77; }
+done
+for dir in /usr/include/wasm32-wasi /usr/lib/llvm-14/lib/clang/14.0.6/lib/wasi; do
+  [[ -d $dir ]] || { echo "js/build.sh: $dir not found (wasi-libc, libc++-14-dev-wasm32, libclang-rt-14-dev-wasm32)"; exit 77; }
+done
+[[ -f $build/build.ninja ]] ||
+  meson setup "$build" --cross-file js/wasm32-wasi.ini --buildtype=release \
+    -Doptimization="$optimization" -Db_lto=true -Ddefault_library=static -Dinstall_library=false \
+    -Dthreads=disabled -Dtests=disabled -Dbench=disabled -Dfuzz=disabled -Dcli=disabled \
+    -Dpython=disabled >/dev/null
+ninja -C "$build" -j"${JOBS:-2}" js/pear.wasm
+cp "$build/js/pear.wasm" js/pear.wasm
+echo "js/pear.wasm: $(stat -c %s js/pear.wasm) bytes"
