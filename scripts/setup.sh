@@ -16,7 +16,11 @@ if [[ "${1:-}" != minimal ]]; then
              python3-dev pybind11-dev python3-mesonpy python3-numpy python3-pytest
              python3-shapely python3-geopandas python3-dask python3-distributed
              python3-mapbox-earcut
-             python3-mypy)                           # stubtest: the type stubs against the module
+             python3-mypy                            # stubtest: the type stubs against the module
+             # the JavaScript package (js/): its WebAssembly build and node for its tests
+             clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libclang-rt-14-dev-wasm32 nodejs)
+  # npm fetches earcut.js for the tests; nodejs from nodesource brings its own npm
+  command -v npm >/dev/null || packages+=(npm)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -1,0 +1,137 @@
+// The earcut-style entry, the batch, bad arguments, and memory: repeated calls must neither
+// grow the wasm heap nor allocate on the JavaScript side once warm.
+import assert from 'node:assert/strict';
+import { join } from 'node:path';
+import { test } from 'node:test';
+
+import { memory, PearError, triangulate, triangulateBatch, Triangulator, validate } from '../index.js';
+import { bundledCorpus, folderPolygons } from './polygons.js';
+
+const square = [0, 0, 4, 0, 4, 4, 0, 4];
+const hole = [1, 1, 1, 3, 3, 3, 3, 1];
+
+test("earcut's convention: flat arrays in, a Uint32Array of vertex indices out", () => {
+  const triangles = triangulate([...square, ...hole], [4]);
+  assert.ok(triangles instanceof Uint32Array);
+  assert.equal(triangles.length, 3 * 8);
+  assert.equal(validate([...square, ...hole], [4], triangles).valid, true);
+  // dim 3: z is skipped, vertices are still numbered one per triple.
+  const xyz = [0, 0, 9, 4, 0, 9, 4, 4, 9, 0, 4, 9];
+  assert.deepEqual(Array.from(triangulate(xyz, null, 3)).sort(), Array.from(triangulate(square)).sort());
+  assert.equal(triangulate(square, []).length, 6);
+  assert.equal(triangulate(new Float64Array(square)).length, 6);
+});
+
+test('bad arguments: a clear error that names what is wrong', () => {
+  assert.throws(() => triangulate([0, 0, 1, 0, 1]), /coords has 5 numbers, not a multiple of dim 2/);
+  assert.throws(() => triangulate(square, null, 1), /dim must be an integer >= 2/);
+  assert.throws(() => triangulate(square, null, 2.5), /dim must be an integer >= 2/);
+  assert.throws(() => triangulate(null), /coords must be an array/);
+  assert.throws(() => triangulate(square, [1.5]), /holeIndices\[0\] is 1.5, not a vertex index/);
+  assert.throws(() => triangulate(square, [-1]), /holeIndices\[0\] is -1/);
+  assert.throws(() => new Triangulator({ heuristic: 'best' }), /heuristic 'best' is not 'top' or 'fast'/);
+  assert.throws(() => new Triangulator({ algoritm: 'sequential' }), /unknown option 'algoritm'/);
+  assert.throws(() => new Triangulator({ algorithm: 'greedy' }), /algorithm 'greedy' is not one of/);
+  assert.throws(() => validate(square, null, [0, 1]), /triangles has 2 indices, not a multiple of 3/);
+});
+
+test('bad input: triangulate throws a PearError with the status and the place', () => {
+  const nan = () => triangulate([...square, 1, 1, NaN, 3, 3, 3], [4]);
+  assert.throws(nan, (error) => {
+    assert.ok(error instanceof PearError);
+    assert.equal(error.status, 'invalid_input');
+    assert.match(error.message, /ring 1, vertex 1: coordinate is NaN or infinite/);
+    assert.equal(error.diagnostics[0].issue, 'non_finite_coordinate');
+    return true;
+  });
+  assert.throws(() => triangulate(square, [7]), (error) => error.diagnostics[0].issue === 'invalid_offsets');
+  // Not simple is no error here (earcut's convention): the best effort comes back.
+  assert.equal(triangulate([0, 0, 2, 2, 2, 0, 0, 2]).length % 3, 0);
+});
+
+test('batch: the same triangles as one polygon at a time, offset into the batch', () => {
+  const polygons = ['countries', 'glyphs'].flatMap((f) => folderPolygons(join(bundledCorpus, f)));
+  const coords = [];
+  const rings = [0];
+  const parts = [0];
+  for (const p of polygons) {
+    const base = coords.length / 2;
+    coords.push(...p.coords);
+    for (const h of p.holes) rings.push(base + h);
+    rings.push(coords.length / 2);
+    parts.push(rings.length - 1);
+  }
+  const batch = triangulateBatch(coords, rings, parts, { heuristic: 'fast' });
+  const one = new Triangulator({ heuristic: 'fast' });
+  let base = 0;
+  for (const [i, p] of polygons.entries()) {
+    const single = one.triangulate(p.coords, p.holes);
+    assert.equal(batch.status[i], single.statusCode, p.name);
+    const mine = batch.triangles.subarray(3 * batch.triangleOffsets[i], 3 * batch.triangleOffsets[i + 1]);
+    assert.deepEqual(Array.from(mine, (v) => v - base), Array.from(single.triangles), p.name);
+    base += p.coords.length / 2;
+  }
+});
+
+test('batch: bad offsets give that polygon invalid_input, the others are triangulated', () => {
+  const coords = [...square, ...square];
+  const batch = triangulateBatch(coords, [0, 4, 9], [0, 1, 2]);
+  assert.deepEqual(Array.from(batch.status), [0, 2]);
+  assert.equal(batch.triangleOffsets[1] - batch.triangleOffsets[0], 2);
+  assert.deepEqual(batch.diagnostics.map((d) => [d.polygon, d.issue]), [[1, 'invalid_offsets']]);
+  assert.throws(() => triangulateBatch(coords, [], [0]), /ringOffsets needs at least one entry/);
+  assert.throws(() => triangulateBatch(coords, [0, 4.5], [0, 1]), /ringOffsets\[1\] is 4.5, not an index/);
+  assert.throws(() => triangulateBatch([0, 0, 1], [0, 1], [0, 1]), /not x, y pairs/);
+});
+
+test('memory: repeated calls do not grow the wasm heap once warm', () => {
+  const polygons = ['earcut', 'countries', 'glyphs'].flatMap((f) => folderPolygons(join(bundledCorpus, f)));
+  const triangulators = [new Triangulator(), new Triangulator({ heuristic: 'fast', cdt: true })];
+  const once = () => {
+    for (const p of polygons) {
+      for (const t of triangulators) t.triangulate(p.coords, p.holes);
+      triangulate(p.coords, p.holes.length ? p.holes : null).length; // eslint-disable-line
+    }
+  };
+  const safely = () => {
+    try {
+      once();
+    } catch (error) {
+      if (!(error instanceof PearError)) throw error;
+    }
+  };
+  for (let i = 0; i < 3; ++i) safely();
+  const warm = memory.buffer.byteLength;
+  for (let i = 0; i < 20; ++i) safely();
+  assert.equal(memory.buffer.byteLength, warm);
+});
+
+test('no allocation on the JavaScript side: Triangulator.triangulate + copyTrianglesTo', (t) => {
+  if (typeof globalThis.gc !== 'function') {
+    t.skip('needs node --expose-gc');
+    return;
+  }
+  const polygon = folderPolygons(join(bundledCorpus, 'earcut')).find((p) => p.name === 'building');
+  const triangulator = new Triangulator();
+  const out = new Uint32Array(3 * polygon.coords.length);
+  const loop = (calls) => {
+    let sum = 0;
+    for (let i = 0; i < calls; ++i) {
+      const result = triangulator.triangulate(polygon.coords, polygon.holes);
+      sum += triangulator.result.copyTrianglesTo(out) + result.statusCode;
+    }
+    return sum;
+  };
+  const calls = 20000;
+  // The least growth of five rounds: until the optimizing compiler has run (two rounds or so)
+  // numbers are boxed on the heap; an allocation in every call would show in every round.
+  let grown = Infinity;
+  for (let round = 0; round < 5; ++round) {
+    loop(calls);
+    globalThis.gc();
+    const before = process.memoryUsage().heapUsed;
+    loop(calls);
+    grown = Math.min(grown, process.memoryUsage().heapUsed - before);
+  }
+  assert.ok(grown < calls, `${grown} bytes for ${calls} calls`);
+});
