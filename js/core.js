@@ -237,7 +237,8 @@ class Pear {
     if (result.statusCode >= 2) {
       const diagnostics = result.diagnostics;
       const where = diagnostics.find((d) => d.issue !== 'hole_dropped_too_small') ?? diagnostics[0];
-      throw new PearError(`pear: ${where ? where.message : result.status}`, result.status, diagnostics);
+      const hint = where?.issue === 'invalid_offsets' ? ` (holeIndices must rise, each at most ${vertices})` : '';
+      throw new PearError(`pear: ${where ? where.message : result.status}${hint}`, result.status, diagnostics);
     }
     return result.triangles.slice();
   }
@@ -252,6 +253,12 @@ class Pear {
     checkArrayLike(triangles, 'triangles');
     if (triangles.length % 3 !== 0) {
       throw new RangeError(`pear: triangles has ${triangles.length} indices, not a multiple of 3`);
+    }
+    for (let i = 0; i < triangles.length; ++i) {
+      const index = triangles[i];
+      if (!Number.isInteger(index) || index < 0 || index > 0xffffffff) {
+        throw new RangeError(`pear: triangles[${i}] is ${index}, not a vertex index`);
+      }
     }
     const input = this.exports.pear_triangle_input(triangles.length / 3) >>> 2;
     this.heap.refresh().u32.set(triangles, input);

@@ -33,6 +33,7 @@ test('bad arguments: a clear error that names what is wrong', () => {
   assert.throws(() => new Triangulator({ algoritm: 'sequential' }), /unknown option 'algoritm'/);
   assert.throws(() => new Triangulator({ algorithm: 'greedy' }), /algorithm 'greedy' is not one of/);
   assert.throws(() => validate(square, null, [0, 1]), /triangles has 2 indices, not a multiple of 3/);
+  assert.throws(() => validate(square, null, [0, 1, 2.5]), /triangles\[2\] is 2.5, not a vertex index/);
 });
 
 test('bad input: triangulate throws a PearError with the status and the place', () => {
@@ -44,7 +45,11 @@ test('bad input: triangulate throws a PearError with the status and the place', 
     assert.equal(error.diagnostics[0].issue, 'non_finite_coordinate');
     return true;
   });
-  assert.throws(() => triangulate(square, [7]), (error) => error.diagnostics[0].issue === 'invalid_offsets');
+  assert.throws(() => triangulate(square, [7]), (error) => {
+    assert.equal(error.diagnostics[0].issue, 'invalid_offsets');
+    assert.match(error.message, /holeIndices must rise, each at most 4/);
+    return true;
+  });
   // Not simple is no error here (earcut's convention): the best effort comes back.
   assert.equal(triangulate([0, 0, 2, 2, 2, 0, 0, 2]).length % 3, 0);
 });
