@@ -240,7 +240,8 @@ class Pear {
       const hint = where?.issue === 'invalid_offsets' ? ` (holeIndices must rise, each at most ${vertices})` : '';
       throw new PearError(`pear: ${where ? where.message : result.status}${hint}`, result.status, diagnostics);
     }
-    return result.triangles.slice();
+    const first = result.address >>> 2;
+    return this.heap.refresh().u32.slice(first, first + 3 * result.triangleCount);  // one allocation
   }
 
   /**
