@@ -89,14 +89,23 @@ test('batch: bad offsets give that polygon invalid_input, the others are triangu
   assert.throws(() => triangulateBatch([0, 0, 1], [0, 1], [0, 1]), /not x, y pairs/);
 });
 
-test('memory: repeated calls do not grow the wasm heap once warm', () => {
+test('memory: repeated calls (single, batch, validator) do not grow the wasm heap once warm', () => {
   const polygons = ['earcut', 'countries', 'glyphs'].flatMap((f) => folderPolygons(join(bundledCorpus, f)));
   const triangulators = [new Triangulator(), new Triangulator({ heuristic: 'fast', cdt: true })];
+  const batch = { coords: [], rings: [0], parts: [0] };
+  for (const p of polygons.slice(0, 20)) {
+    const base = batch.coords.length / 2;
+    batch.coords.push(...p.coords);
+    for (const h of p.holes) batch.rings.push(base + h);
+    batch.rings.push(batch.coords.length / 2);
+    batch.parts.push(batch.rings.length - 1);
+  }
   const once = () => {
     for (const p of polygons) {
-      for (const t of triangulators) t.triangulate(p.coords, p.holes);
-      triangulate(p.coords, p.holes.length ? p.holes : null).length; // eslint-disable-line
+      for (const t of triangulators) validate(p.coords, p.holes, t.triangulate(p.coords, p.holes).triangles.slice());
+      triangulate(p.coords, p.holes.length ? p.holes : null);
     }
+    triangulateBatch(batch.coords, batch.rings, batch.parts);
   };
   const safely = () => {
     try {
