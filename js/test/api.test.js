@@ -149,3 +149,27 @@ test('no allocation on the JavaScript side: Triangulator.triangulate + copyTrian
   }
   assert.ok(grown < calls, `${grown} bytes for ${calls} calls`);
 });
+
+test('random input never traps: an answer, a PearError or an argument error, indices in range', () => {
+  let seed = 12345;
+  const random = () => ((seed = (seed * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const specials = [NaN, Infinity, -Infinity, 0, -0, 2 ** 201, 2 ** -201, 1e-300, 5e-324];
+  const triangulator = new Triangulator({ cdt: true });
+  for (let round = 0; round < 2000; ++round) {
+    const vertices = Math.floor(random() * 40);
+    const coords = Array.from({ length: 2 * vertices }, () =>
+      random() < 0.02 ? specials[Math.floor(random() * specials.length)] : Math.floor(random() * 8));
+    const holes = [];
+    for (let h = Math.floor(random() * 4); h > 0; --h) holes.push(Math.floor(random() * (vertices + 3)));
+    if (random() < 0.7) holes.sort((a, b) => a - b);
+    const result = triangulator.triangulate(coords, holes);
+    assert.ok(['ok', 'not_simple', 'invalid_input'].includes(result.status), result.status);
+    for (const index of result.triangles) assert.ok(index < vertices, `index ${index} of ${vertices}`);
+    if (result.ok) assert.equal(validate(coords, holes, result.triangles.slice(), { cdt: true }).valid, true);
+    try {
+      triangulate(coords, holes);
+    } catch (error) {
+      assert.ok(error instanceof PearError, String(error));
+    }
+  }
+});
