@@ -2,8 +2,10 @@
 // triangulated by one pooled engine on pear's scheduler, then gathered in polygon order.
 #include <algorithm>
 #include <chrono>
+#include <iterator>
 #include <limits>
 #include <optional>
+#include <span>
 
 #include "engine_pool.hpp"
 #include "pear/batch.hpp"
@@ -41,15 +43,33 @@ std::optional<Diagnostic> locate_polygon(const PolygonBatch& batch, std::size_t 
   return std::nullopt;
 }
 
-/// One chunk's results: its polygons' triangles (batch indices) and diagnostics in order.
+/// One chunk's results. Its triangles go straight into the result's array, in the room
+/// saved for the chunk (triangle_room); those that do not fit there, and every one after
+/// them, are spilled, in order. Diagnostics are few: a vector per chunk.
 struct ChunkResult {
-  TriangleList triangles;
+  std::span<std::array<std::uint32_t, 3>> room;
+  std::size_t written = 0;  // triangles in room
+  TriangleList spilled;
   std::vector<Diagnostic> diagnostics;
   std::size_t flips = 0;
+
+  /// A polygon's triangles (polygon indices), shifted by `base` to batch indices.
+  void add(const TriangleList& triangles, std::uint32_t base) {
+    const auto shifted = [base](const std::array<std::uint32_t, 3>& t) {
+      return std::array<std::uint32_t, 3>{t[0] + base, t[1] + base, t[2] + base};
+    };
+    if (spilled.empty() && triangles.size() <= room.size() - written) {
+      std::transform(triangles.begin(), triangles.end(), room.begin() + written, shifted);
+      written += triangles.size();
+    } else {
+      std::transform(triangles.begin(), triangles.end(), std::back_inserter(spilled), shifted);
+    }
+  }
+  std::size_t size() const { return written + spilled.size(); }
 };
 
 /// Polygon `span` of the batch by the one run, its points read where they are (only its ring
-/// offsets are made relative); its triangles (batch indices) and diagnostics appended.
+/// offsets are made relative); its triangles (batch indices) and diagnostics added to `chunk`.
 Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const Options& options,
                        Engine& engine, ChunkResult& chunk) {
   Engine::Buffers& w = engine.buffers();
@@ -64,12 +84,24 @@ Status triangulate_one(const PolygonBatch& batch, const PolygonSpan& span, const
   DelaunayStatistics flips;
   const Status status = engine.run(CoordinateView{xy, w.input.ring_starts}, options, w.triangles,
                                    w.diagnostics, flips);
-  const auto base = static_cast<std::uint32_t>(span.first_point);
-  for (const auto& t : w.triangles)
-    chunk.triangles.push_back({t[0] + base, t[1] + base, t[2] + base});
+  chunk.add(w.triangles, static_cast<std::uint32_t>(span.first_point));
   chunk.diagnostics.insert(chunk.diagnostics.end(), w.diagnostics.begin(), w.diagnostics.end());
   chunk.flips += flips.flips;
   return status;
+}
+
+/// Room for polygon p's triangles: a simple polygon of n vertices and h holes has n + 2h - 2,
+/// that is points + 2 * rings - 4 without closing points (fewer with them, or with repeated
+/// points cleaned away); a repair that adds nodes may need more: those spill. Offsets out of
+/// range or order get none (such a polygon has no triangles).
+std::size_t triangle_room(const PolygonBatch& batch, std::size_t p) {
+  const auto rings = static_cast<std::int64_t>(batch.ring_offsets.size()) - 1;
+  const auto points = static_cast<std::int64_t>(batch.coordinates.size() / 2);
+  const std::int64_t r0 = batch.polygon_offsets[p], r1 = batch.polygon_offsets[p + 1];
+  if (r0 < 0 || r1 < r0 || r1 > rings) return 0;
+  const std::int64_t first = batch.ring_offsets[r0], end = batch.ring_offsets[r1];
+  if (first < 0 || end < first || end > points) return 0;
+  return static_cast<std::size_t>(std::max<std::int64_t>(end - first + 2 * (r1 - r0) - 4, 0));
 }
 
 /// Chunk boundaries (polygon indices): about 16 chunks per thread of about equal vertex counts,
@@ -102,6 +134,59 @@ std::vector<std::size_t> chunk_bounds(const PolygonBatch& batch, std::size_t pol
   return bounds;
 }
 
+/// Gives each chunk its room in `triangles`, the sum of its polygons' rooms, all within a
+/// budget of points + 2 * rings (polygons that share points would otherwise size it by their
+/// sum): a chunk past the budget spills. Written in place, the triangles are not copied from
+/// a vector per chunk, which cost fresh pages (page faults) at every call.
+void give_rooms(const PolygonBatch& batch, std::span<const std::size_t> bounds,
+                std::vector<ChunkResult>& parts, TriangleList& triangles) {
+  const std::size_t budget = batch.coordinates.size() / 2 + 2 * batch.ring_offsets.size();
+  std::vector<std::size_t> rooms(parts.size());
+  std::size_t total = 0;
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    std::size_t room = 0;  // each polygon's room is within the budget: no overflow
+    for (std::size_t p = bounds[c]; p < bounds[c + 1]; ++p)
+      room = std::min(room + triangle_room(batch, p), budget);
+    rooms[c] = std::min(room, budget - total);
+    total += rooms[c];
+  }
+  triangles.resize(total);
+  std::size_t start = 0;
+  for (std::size_t c = 0; c < parts.size(); ++c) {
+    parts[c].room = std::span(triangles).subspan(start, rooms[c]);
+    start += rooms[c];
+  }
+}
+
+/// Closes the gaps between the chunks' rooms, front to back in place, when nothing spilled;
+/// else gathers the rooms and spills into a new array.
+void gather_triangles(const std::vector<ChunkResult>& parts, TriangleList& triangles) {
+  const bool spilled = std::any_of(parts.begin(), parts.end(),
+                                   [](const ChunkResult& part) { return !part.spilled.empty(); });
+  if (!spilled) {
+    std::size_t end = 0;
+    for (const ChunkResult& part : parts) {
+      const auto from = static_cast<std::size_t>(part.room.data() - triangles.data());
+      const auto source = triangles.begin() + static_cast<std::ptrdiff_t>(from);
+      if (from != end)  // from > end: a forward copy is safe
+        std::copy(source, source + static_cast<std::ptrdiff_t>(part.written),
+                  triangles.begin() + static_cast<std::ptrdiff_t>(end));
+      end += part.written;
+    }
+    triangles.resize(end);
+    return;
+  }
+  TriangleList gathered;
+  std::size_t total = 0;
+  for (const ChunkResult& part : parts) total += part.size();
+  gathered.reserve(total);
+  for (const ChunkResult& part : parts) {
+    gathered.insert(gathered.end(), part.room.begin(), part.room.begin() + part.written);
+    gathered.insert(gathered.end(), part.spilled.begin(), part.spilled.end());
+  }
+  triangles = std::move(gathered);
+}
+
 BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
                                                      const Options& options,
                                                      std::uint64_t max_index) {
@@ -126,13 +211,14 @@ BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
       chunk_bounds(batch, polygons, runner ? runner->concurrency() : 1);
   const std::size_t chunks = bounds.size() - 1;
   std::vector<ChunkResult> parts(chunks);
+  give_rooms(batch, bounds, parts, result.triangles);
   std::vector<std::int64_t> triangle_counts(polygons), diagnostic_counts(polygons);
   // With a profile: one phase whose tasks are the polygons (they run in parallel).
   std::vector<double> seconds(options.profile ? polygons : 0);
   const auto run_chunk = [&](std::size_t c) {
     PooledEngine engine;
     for (std::size_t p = bounds[c]; p < bounds[c + 1]; ++p) {
-      const std::size_t triangles_before = parts[c].triangles.size();
+      const std::size_t triangles_before = parts[c].size();
       const std::size_t diagnostics_before = parts[c].diagnostics.size();
       PolygonSpan span;
       // The clock only for a profile: in WebAssembly each reading is a call out to JavaScript.
@@ -151,7 +237,7 @@ BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
       if (options.profile)
         seconds[p] =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      triangle_counts[p] = static_cast<std::int64_t>(parts[c].triangles.size() - triangles_before);
+      triangle_counts[p] = static_cast<std::int64_t>(parts[c].size() - triangles_before);
       diagnostic_counts[p] =
           static_cast<std::int64_t>(parts[c].diagnostics.size() - diagnostics_before);
     }
@@ -165,15 +251,7 @@ BatchTriangulation<std::uint32_t> triangulate_chunks(const PolygonBatch& batch,
     result.triangle_offsets[p + 1] = result.triangle_offsets[p] + triangle_counts[p];
     result.diagnostic_offsets[p + 1] = result.diagnostic_offsets[p] + diagnostic_counts[p];
   }
-  result.triangles.resize(static_cast<std::size_t>(result.triangle_offsets.back()));
-  const auto gather = [&](std::size_t c) {
-    std::copy(parts[c].triangles.begin(), parts[c].triangles.end(),
-              result.triangles.begin() + result.triangle_offsets[bounds[c]]);
-  };
-  if (runner && chunks > 1)
-    runner->run(chunks, gather);
-  else
-    for (std::size_t c = 0; c < chunks; ++c) gather(c);
+  gather_triangles(parts, result.triangles);
   for (const ChunkResult& part : parts) {
     result.diagnostics.insert(result.diagnostics.end(), part.diagnostics.begin(),
                               part.diagnostics.end());

@@ -207,6 +207,30 @@ TEST(Batch, SlicesWhoseOffsetsDoNotStartAtZero) {
   }
 }
 
+// The batch saves room for each polygon's triangles from its points and rings, within a budget
+// of the batch's points and rings; polygons that share one ring (polygon offsets may repeat
+// it) outgrow that budget and spill past it, in order, on one thread and on several.
+TEST(Batch, PolygonsSharingOneRingSpillPastTheRoomInOrder) {
+  const Polygon comb = generate_polygon("comb", 60, 60);
+  Flat flat;
+  flat.add(comb);
+  std::vector<std::int64_t> polygon_offsets{0};
+  for (int copy = 0; copy < 200; ++copy) polygon_offsets.insert(polygon_offsets.end(), {1, 0});
+  polygon_offsets.back() = 1;  // polygons 0, 2, 4, ...: the comb; 1, 3, ...: rings [1, 0)
+  const PolygonBatch batch{flat.coordinates, flat.ring_offsets, polygon_offsets};
+  for (unsigned threads : {1u, 2u}) {
+    Options options;
+    options.threads = threads;
+    const BatchTriangulation<> result = triangulate_batch(batch, options);
+    ASSERT_EQ(result.size(), polygon_offsets.size() - 1);
+    ASSERT_EQ(result.triangle_offsets.back(), static_cast<std::int64_t>(result.triangles.size()));
+    EXPECT_GT(result.triangles.size(), 10 * comb[0].size());  // far past points + 2 * rings
+    for (std::size_t p = 0; p < result.size(); p += 2)
+      expect_same_as_single(result, p, comb, 0, options);
+    EXPECT_EQ(result.status[1], Status::invalid_input);
+  }
+}
+
 TEST(Batch, NarrowIndicesOverflowPerPolygon) {
   // Two polygons of 40,000 points: the second one's indices do not fit 16 bits.
   const std::vector<Polygon> polygons = {generate_polygon("star", 40000, 1),
