@@ -90,6 +90,24 @@ def test_an_object_that_is_not_shapely_goes_through_wkb():
                                         pear.triangulate(SQUARE))
 
 
+class GeometryOfAnother(geometry.Polygon):
+    """A shapely Polygon whose _geom is another's (as shapely's proxies override _geom): the
+    reader must ask _geom, not read __geom__, which it does for types that keep shapely's."""
+
+    @property
+    def _geom(self):
+        return TRIANGLE._geom
+
+
+def test_a_type_that_overrides_geom_is_read_through_it():
+    other = GeometryOfAnother(SQUARE_WITH_HOLE[:4])
+    result = pear.triangulate_many([SQUARE, other, TRIANGLE])
+    assert result.geometry_offsets.tolist() == [0, 1, 2, 3]
+    assert np.array_equal(result.coordinates[result.geometry_point_offsets()[1]:
+                                             result.geometry_point_offsets()[2]],
+                          np.asarray(TRIANGLE.exterior.coords))
+
+
 def test_other_values_still_raise_type_error():
     with pytest.raises(TypeError, match="geometry 1 is not WKB"):
         pear.triangulate_many([SQUARE, "POLYGON ((0 0, 1 0, 1 1))"])
