@@ -217,12 +217,16 @@ PEAR_API Mesh read_node_ele(std::string_view node_text, std::string_view ele_tex
 /// One triangulated polygon for the writers: its rings (as read) and triangles indexing its
 /// points ring after ring. `part` is empty or has one entry per triangle: the thread or
 /// partition that produced it (the SVG colours by it). The rest is what read_features gave
-/// (a Feature's z, properties and feature_index) and the run's status, for OBJ and GeoJSON.
+/// (a Feature's z, m, properties and feature_index) and the run's status, for OBJ and GeoJSON.
 struct TriangulatedPolygon {
   Polygon polygon = {};
   std::vector<std::array<std::uint32_t, 3>> triangles = {};
   std::vector<std::uint32_t> part = {};
-  std::vector<double> z = {};   ///< empty, or one per point (writers throw invalid_argument else)
+  std::vector<double> z = {};  ///< empty, or one per point (writers throw invalid_argument else)
+  /// Empty, or one m per point, as z. The writers below have no place for it (OBJ, GeoJSON:
+  /// RFC 7946 positions are x, y and an optional z, .node, SVG); the CLI writes it to GDAL
+  /// layers with M.
+  std::vector<double> m = {};
   std::string properties = {};  ///< a JSON object's text, or empty
   std::size_t feature_index = 0;
   Status status = Status::ok;
@@ -233,7 +237,8 @@ struct TriangulatedPolygon {
 /// option adds a point), so each vertex keeps its input z exactly.
 PEAR_API void write_obj(std::ostream& out, std::span<const TriangulatedPolygon> polygons);
 /// GeoJSON FeatureCollection: one Feature per polygon, its geometry a MultiPolygon of triangles
-/// (positions [x, y, z] where the polygon has z). Its properties are the input's (the members
+/// (positions [x, y, z] where the polygon has z; m is not written: GeoJSON has no place for
+/// it). Its properties are the input's (the members
 /// of `properties`, verbatim) and pear's own under one key, which replaces an input member of
 /// that name: "pear": {"index": the polygon's place in the output (from 0), "feature": its
 /// feature_index, "triangles": how many, "status": "ok" or why not (pear::to_string)}. An

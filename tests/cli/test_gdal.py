@@ -3,8 +3,11 @@
 made here with GDAL's ogr2ogr from bundled corpus polygons (with attributes, a line among them,
 and a projected CRS), triangulated, and read back with GDAL: the feature count, the attributes
 and FIDs equal the source's as GDAL reads it, the CRS is the source's, and the triangles' area
-(shoelace, computed here) equals the source polygon's within 1e-9 relative. Errors: a file GDAL
-cannot open, a missing layer, a bad --where, a layer without polygons.
+(shoelace, computed here) equals the source polygon's within 1e-9 relative. GeoJSON properties
+become the fields (names, types, values) that GDAL's own GeoJSON driver makes of the same file;
+a field named like pear's keeps its name and values and pear's is renamed, with a note. m (and
+z) of WKT and of GDAL's own layers with M reach every output vertex, as GDAL reads the output
+back. Errors: a file GDAL cannot open, a missing layer, a bad --where, a layer without polygons.
 
 usage: test_gdal.py PATH/TO/pear gdal|no-gdal
 Skips (exit 77) when pear was built without GDAL or GDAL's command-line tools are missing.
@@ -62,6 +65,30 @@ def fids_by_name(path):
         if m and name:
             fids[name.group(1)] = int(m.group(1))
     return fids
+
+
+def field_types(path):
+    """Field name -> type as ogrinfo lists them ("Integer(Boolean)", "String(JSON)"), in order."""
+    text = run("ogrinfo", "-so", "-al", path).stdout
+    return dict(re.findall(r"^(\w+): ([\w()]+) \(\d+\.\d+\)$", text, re.M))
+
+
+def as_json(value):
+    """A JSON field's value: text in some formats' GeoJSON output, an object in others'."""
+    return json.loads(value) if isinstance(value, str) else value
+
+
+def read_wkt_column(path):
+    """Each feature's geometry as WKT, as GDAL reads the dataset (its CSV driver's output)."""
+    r = run("ogr2ogr", "-f", "CSV", "-lco", "GEOMETRY=AS_WKT", "/vsistdout/", path)
+    assert r.returncode == 0, r.stderr
+    return [line.split('"')[1] for line in r.stdout.splitlines()[1:]]
+
+
+def coordinates(wkt):
+    """Every position of a WKT geometry as a list of floats."""
+    return [[float(v) for v in position.split()]
+            for ring in re.findall(r"\(([^()]+)\)", wkt) for position in ring.split(",")]
 
 
 class Gdal(unittest.TestCase):
@@ -175,6 +202,118 @@ class Gdal(unittest.TestCase):
         out = as_geojson(output)
         self.assertEqual(out["crs"]["properties"]["name"], "urn:ogc:def:crs:EPSG::32633")
         self.assertAlmostEqual(sum(area(f["geometry"]) for f in out["features"]), 16, delta=1e-12)
+
+    def write_geojson(self, name, extra):
+        """The source's features with extra(k, properties) merged into each one's properties."""
+        with open(self.source) as f:
+            collection = json.load(f)
+        for k, feature in enumerate(collection["features"]):
+            feature["properties"].update(extra(k, feature["properties"]))
+        path = self.path(name)
+        with open(path, "w") as f:
+            json.dump(collection, f)
+        return path
+
+    def test_geojson_properties_become_the_fields_gdal_reads(self):
+        # Every JSON kind, a property named like one of pear's fields, and one named like
+        # another but for case: the fields (names, types) and values must be what GDAL's own
+        # GeoJSON driver makes of the file (ogr2ogr), pear's fields after them.
+        source = self.write_geojson("props.geojson", lambda k, p: {
+            "flag": k % 2 == 0, "big": 5_000_000_000 + k, "tags": {"k": [k, "x"]},
+            "pear_tris": -k, "Name": "upper " + p["name"]})
+        for ext in ("gpkg", "fgb"):
+            with self.subTest(ext):
+                output, reference = self.path("props." + ext), self.path("props-gdal." + ext)
+                r = run(PEAR, "triangulate", source, "-o", output)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertIn(output + ": the input's field 'Name' is written as 'Name2'", r.stderr)
+                self.assertIn(output + ": pear's field 'pear_tris' is written as 'pear_tris2'",
+                              r.stderr)
+                self.assertEqual(run("ogr2ogr", "-f", FORMATS[ext], reference, source,
+                                     "-skipfailures").returncode, 0)
+                fields = field_types(output)
+                self.assertEqual(list(fields)[-3:], ["pear_fid", "pear_tris2", "pear_stat"])
+                self.assertEqual(dict(list(fields.items())[:-3]), field_types(reference))
+                self.assertEqual(fields["flag"], "Integer(Boolean)")
+                want = {f["properties"]["name"]: f["properties"]
+                        for f in as_geojson(reference)["features"]}
+                features = as_geojson(output)["features"]
+                self.assertEqual(len(features), self.polygon_count)
+                for feature in features:
+                    props = dict(feature["properties"])
+                    self.assertEqual(props.pop("pear_tris2"), len(feature["geometry"]["coordinates"]))
+                    props.pop("pear_fid"), props.pop("pear_stat")
+                    expected = dict(want[props["name"]])
+                    self.assertEqual(as_json(props.pop("tags")), as_json(expected.pop("tags")))
+                    self.assertEqual(props, expected)
+
+    def test_gdal_fields_named_like_pears_are_kept(self):
+        source = self.path("named.gpkg")
+        geojson = self.write_geojson("named.geojson", lambda k, p: {"pear_stat": "mine %d" % k})
+        self.assertEqual(run("ogr2ogr", "-f", "GPKG", source, geojson, "-skipfailures",
+                             "-nln", "named").returncode, 0)
+        output = self.path("named-out.gpkg")
+        r = run(PEAR, "triangulate", source, "-o", output)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        self.assertIn("pear's field 'pear_stat' is written as 'pear_stat2'", r.stderr)
+        want = {f["properties"]["name"]: f["properties"]["pear_stat"]
+                for f in as_geojson(source)["features"]}
+        for feature in as_geojson(output)["features"]:
+            props = feature["properties"]
+            self.assertEqual(props["pear_stat"], want[props["name"]])
+            self.assertEqual(props["pear_stat2"], "ok")
+
+    def check_m(self, wkt, output, has_z):
+        """Every vertex of every triangle has the z and m of the input vertex at its x, y (as
+        GDAL reads the output back)."""
+        wanted = {(x, y): rest for x, y, *rest in coordinates(wkt)}
+        read = 0
+        for wkt in read_wkt_column(output):
+            self.assertRegex(wkt, r"^MULTIPOLYGON (ZM|M) ")
+            for x, y, *rest in coordinates(wkt):
+                self.assertEqual(rest, wanted[(x, y)] if has_z else wanted[(x, y)][-1:])
+                read += 1
+        self.assertGreater(read, 0)
+
+    def test_m_is_carried_through_gdal_layers(self):
+        polygons = {"m": "POLYGON M ((0 0 1.5, 4 0 2, 4 4 3, 0 4 4, 0 0 1.5), "
+                         "(1 1 7, 1 2 8, 2 2 9, 1 1 7))",
+                    "zm": "POLYGON ZM ((0 0 5 6, 4 0 7 8, 4 4 9 10, 0 4 11 -12, 0 0 5 6))"}
+        for kind, wkt in polygons.items():
+            csv = self.path(kind + ".csv")
+            with open(csv, "w") as f:
+                f.write('WKT,id\n"%s",1\n' % wkt)
+            gpkg = self.path(kind + "-source.gpkg")  # GDAL's own layer with M, for input
+            r = run("ogr2ogr", "-f", "GPKG", gpkg, csv, "-oo", "GEOM_POSSIBLE_NAMES=WKT",
+                    "-oo", "KEEP_GEOM_COLUMNS=NO", "-nlt", "POLYGON" + kind.upper())
+            self.assertEqual(r.returncode, 0, r.stderr)
+            self.assertIn("Measured Polygon", run("ogrinfo", "-so", "-al", gpkg).stdout)
+            wkt_file = self.path(kind + ".wkt")
+            with open(wkt_file, "w") as f:
+                f.write(wkt)
+            for source in (wkt_file, gpkg):
+                for ext in FORMATS:
+                    with self.subTest(kind=kind, source=source, ext=ext):
+                        output = self.path("%s-from-%s.%s" % (kind, source[-4:], ext))
+                        r = run(PEAR, "triangulate", source, "-o", output)
+                        self.assertEqual(r.returncode, 0, r.stderr)
+                        self.check_m(wkt, output, has_z=kind == "zm")
+
+    def test_polygons_without_the_m_others_have_get_0_and_a_note(self):
+        source = self.path("mixed.wkt")
+        with open(source, "w") as f:
+            f.write("POLYGON M ((0 0 1, 4 0 2, 4 4 3, 0 0 1))\n"
+                    "POLYGON Z ((10 0 5, 14 0 7, 14 4 9, 10 0 5))\n")
+        for ext in FORMATS:  # FlatGeobuf refuses a feature whose dimensions differ the layer's
+            with self.subTest(ext):
+                output = self.path("mixed." + ext)
+                r = run(PEAR, "triangulate", source, "-o", output)
+                self.assertEqual(r.returncode, 0, r.stderr)
+                self.assertIn(output + ": 1 of 2 polygons have no z, written with z 0", r.stderr)
+                self.assertIn(output + ": 1 of 2 polygons have no m, written with m 0", r.stderr)
+                positions = [p for wkt in read_wkt_column(output) for p in coordinates(wkt)]
+                self.assertEqual(sorted({tuple(p[2:]) for p in positions}),
+                                 [(0, 1), (0, 2), (0, 3), (5, 0), (7, 0), (9, 0)])
 
     def test_errors_name_the_file_and_layer(self):
         source = self.make("gpkg")

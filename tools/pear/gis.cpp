@@ -16,7 +16,10 @@
 #include <filesystem>
 #include <memory>
 #include <mutex>
+#include <tuple>
 #include <vector>
+
+#include "gis_source.hpp"
 #endif
 
 namespace pear::cli::gis {
@@ -86,15 +89,6 @@ bool creates(GDALDriver* driver) {
 }
 
 }  // namespace
-
-/// The layer's fields and reference system and every feature read, kept with the dataset open
-/// (the features share the layer's definition).
-class Source {
- public:
-  GDALDatasetUniquePtr dataset;
-  OGRLayer* layer = nullptr;
-  std::vector<OGRFeatureUniquePtr> features;  ///< by feature_index, geometries dropped
-};
 
 bool available() {
   return true;
@@ -301,54 +295,70 @@ constexpr const char* fid_field = "pear_fid";
 constexpr const char* triangles_field = "pear_tris";
 constexpr const char* status_field = "pear_stat";
 
-bool is_pear_field(const char* name) {
-  for (const char* ours : {fid_field, triangles_field, status_field})
-    if (lower(name) == ours) return true;
-  return false;
-}
-
 [[noreturn]] void cannot_write(const std::string& path, const std::string& what) {
   throw std::runtime_error("cannot write " + path + ": " + what + ": " + last_gdal_error());
 }
 
-/// The source's fields (less any named like pear's) and pear's; map[i] is the output index of
-/// source field i, or -1.
-std::vector<int> create_fields(OGRLayer& out, const Source* source, const std::string& path) {
+/// The output's fields: map[i] is the output index of source field i; then pear's.
+struct OutputFields {
   std::vector<int> map;
-  if (source != nullptr) {
-    OGRFeatureDefn* defn = source->layer->GetLayerDefn();
-    for (int i = 0; i < defn->GetFieldCount(); ++i) {
-      OGRFieldDefn* field = defn->GetFieldDefn(i);
-      if (is_pear_field(field->GetNameRef())) {
-        map.push_back(-1);
-        continue;
-      }
-      if (out.CreateField(field) != OGRERR_NONE)
-        cannot_write(path, "field '" + std::string(field->GetNameRef()) + "'");
-      map.push_back(out.GetLayerDefn()->GetFieldCount() - 1);
-    }
+  int fid = -1, triangles = -1, status = -1;
+};
+
+/// Adds `field` to the layer under its name or, when a field has that name already (ignoring
+/// case, as GeoPackage and Shapefile do), under the first free one of name2, name3, ...,
+/// which a note says. Returns the field's index.
+int add_field(OGRLayer& layer, const OGRFieldDefn& definition, const std::string& path,
+              const char* whose, std::vector<std::string>& notes) {
+  OGRFieldDefn field(&definition);
+  const std::string name = field.GetNameRef();
+  std::string free = name;
+  for (int n = 2; layer.GetLayerDefn()->GetFieldIndex(free.c_str()) >= 0; ++n)
+    free = name + std::to_string(n);
+  if (free != name) {
+    field.SetName(free.c_str());
+    notes.push_back(path + ": " + whose + " field '" + name + "' is written as '" + free +
+                    "' (a field before it has that name)");
   }
-  OGRFieldDefn fid(fid_field, OFTInteger64), triangles(triangles_field, OFTInteger64),
-      status(status_field, OFTString);
-  for (OGRFieldDefn* field : {&fid, &triangles, &status})
-    if (out.CreateField(field) != OGRERR_NONE)
-      cannot_write(path, "field '" + std::string(field->GetNameRef()) + "'");
-  return map;
+  if (layer.CreateField(&field) != OGRERR_NONE) cannot_write(path, "field '" + free + "'");
+  return layer.GetLayerDefn()->GetFieldCount() - 1;
 }
 
-/// The triangles of one polygon, added to a MultiPolygon (with z when the polygon has it).
+/// The source's fields, then pear's: each keeps its name unless a field before it has it.
+OutputFields create_fields(OGRLayer& out, const Source* source, const std::string& path,
+                           std::vector<std::string>& notes) {
+  OutputFields fields;
+  if (source != nullptr) {
+    OGRFeatureDefn* definition = source->fields();
+    for (int i = 0; i < definition->GetFieldCount(); ++i)
+      fields.map.push_back(
+          add_field(out, *definition->GetFieldDefn(i), path, "the input's", notes));
+  }
+  fields.fid = add_field(out, OGRFieldDefn(fid_field, OFTInteger64), path, "pear's", notes);
+  fields.triangles =
+      add_field(out, OGRFieldDefn(triangles_field, OFTInteger64), path, "pear's", notes);
+  fields.status = add_field(out, OGRFieldDefn(status_field, OFTString), path, "pear's", notes);
+  return fields;
+}
+
+/// The triangles of one polygon, added to a MultiPolygon (with z and m when it has them).
 void add_triangles(const io::TriangulatedPolygon& polygon, OGRMultiPolygon& out) {
   std::vector<Point> points;
   for (const Ring& ring : polygon.polygon) points.insert(points.end(), ring.begin(), ring.end());
+  const bool z = !polygon.z.empty(), m = !polygon.m.empty();
   for (const auto& t : polygon.triangles) {
     auto ring = std::make_unique<OGRLinearRing>();
     ring->setNumPoints(4);
     for (int k = 0; k < 4; ++k) {
       const std::uint32_t v = t[k % 3];
-      if (polygon.z.empty())
-        ring->setPoint(k, points[v].x, points[v].y);
-      else
+      if (z && m)
+        ring->setPoint(k, points[v].x, points[v].y, polygon.z[v], polygon.m[v]);
+      else if (m)
+        ring->setPointM(k, points[v].x, points[v].y, polygon.m[v]);
+      else if (z)
         ring->setPoint(k, points[v].x, points[v].y, polygon.z[v]);
+      else
+        ring->setPoint(k, points[v].x, points[v].y);
     }
     auto triangle = std::make_unique<OGRPolygon>();
     triangle->addRingDirectly(ring.release());
@@ -356,24 +366,30 @@ void add_triangles(const io::TriangulatedPolygon& polygon, OGRMultiPolygon& out)
   }
 }
 
-/// One output feature for results[first, last), the polygons of one input feature.
+/// The source feature's values (and a GDAL layer's FID) for output feature `feature`.
+void copy_values(const Source& source, std::size_t index, const OutputFields& fields,
+                 OGRFeature& feature) {
+  if (index >= source.features.size() || !source.features[index]) return;
+  const OGRFeature& from = *source.features[index];
+  for (int i = 0; i < static_cast<int>(fields.map.size()); ++i) {
+    if (!from.IsFieldSet(i)) continue;
+    if (from.IsFieldNull(i))
+      feature.SetFieldNull(fields.map[i]);
+    else
+      feature.SetField(fields.map[i], from.GetRawFieldRef(i));
+  }
+  if (source.layer) feature.SetFID(from.GetFID());
+}
+
+/// One output feature for `parts`, the polygons of one input feature.
 void write_feature(OGRLayer& layer, std::span<const io::TriangulatedPolygon> parts,
-                   const Source* source, const std::vector<int>& map, const std::string& path) {
+                   const Source* source, const OutputFields& fields, const std::string& path) {
   OGRFeature feature(layer.GetLayerDefn());
   const std::size_t index = parts.front().feature_index;
-  GIntBig fid = static_cast<GIntBig>(index);
-  if (source != nullptr && index < source->features.size()) {
-    const OGRFeature& from = *source->features[index];
-    fid = from.GetFID();
-    for (int i = 0; i < static_cast<int>(map.size()); ++i) {
-      if (map[i] < 0 || !from.IsFieldSet(i)) continue;
-      if (from.IsFieldNull(i))
-        feature.SetFieldNull(map[i]);
-      else
-        feature.SetField(map[i], from.GetRawFieldRef(i));
-    }
-    feature.SetFID(fid);
-  }
+  if (source != nullptr) copy_values(*source, index, fields, feature);
+  const bool from_layer = source != nullptr && source->layer != nullptr &&
+                          index < source->features.size() && source->features[index];
+  const GIntBig fid = from_layer ? source->features[index]->GetFID() : static_cast<GIntBig>(index);
   auto triangles = std::make_unique<OGRMultiPolygon>();
   std::size_t count = 0;
   const char* status = to_string(Status::ok);
@@ -383,9 +399,13 @@ void write_feature(OGRLayer& layer, std::span<const io::TriangulatedPolygon> par
     if (part.status != Status::ok && status == std::string_view(to_string(Status::ok)))
       status = to_string(part.status);
   }
-  feature.SetField(fid_field, static_cast<GIntBig>(fid));
-  feature.SetField(triangles_field, static_cast<GIntBig>(count));
-  feature.SetField(status_field, status);
+  // The layer's dimensions for every geometry (some drivers refuse a mix): 0 for a polygon
+  // without the z or m that others have (write() notes it).
+  triangles->set3D(OGR_GT_HasZ(layer.GetGeomType()));
+  triangles->setMeasured(OGR_GT_HasM(layer.GetGeomType()));
+  feature.SetField(fields.fid, fid);
+  feature.SetField(fields.triangles, static_cast<GIntBig>(count));
+  feature.SetField(fields.status, status);
   feature.SetGeometryDirectly(triangles.release());
   if (layer.CreateFeature(&feature) != OGRERR_NONE) cannot_write(path, "a feature");
 }
@@ -397,7 +417,7 @@ std::unique_ptr<OGRSpatialReference, void (*)(OGRSpatialReference*)> reference(c
     if (srs) srs->Release();
   };
   std::unique_ptr<OGRSpatialReference, void (*)(OGRSpatialReference*)> out(nullptr, release);
-  const OGRSpatialReference* from = source ? source->layer->GetSpatialRef() : nullptr;
+  const OGRSpatialReference* from = source ? source->reference() : nullptr;
   if (from != nullptr) {
     out.reset(from->Clone());
   } else if (srid != 0) {
@@ -408,40 +428,65 @@ std::unique_ptr<OGRSpatialReference, void (*)(OGRSpatialReference*)> reference(c
   return out;
 }
 
+/// MultiPolygon with z and m where any polygon has them; a note for the polygons that lack
+/// what others have (they get 0).
+OGRwkbGeometryType geometry_type(std::span<const io::TriangulatedPolygon> results,
+                                 const std::string& path, std::vector<std::string>& notes) {
+  const auto without = [&](auto empty) {
+    return static_cast<std::size_t>(std::count_if(results.begin(), results.end(), empty));
+  };
+  const std::size_t no_z = without([](const io::TriangulatedPolygon& r) { return r.z.empty(); });
+  const std::size_t no_m = without([](const io::TriangulatedPolygon& r) { return r.m.empty(); });
+  const bool z = no_z < results.size(), m = no_m < results.size();
+  for (const auto& [has, lacking, what] : {std::tuple{z, no_z, "z"}, std::tuple{m, no_m, "m"}})
+    if (has && lacking > 0)
+      notes.push_back(path + ": " + std::to_string(lacking) + " of " +
+                      std::to_string(results.size()) + " polygons have no " + what +
+                      ", written with " + what + " 0");
+  return z && m ? wkbMultiPolygonZM
+         : m    ? wkbMultiPolygonM
+         : z    ? wkbMultiPolygon25D
+                : wkbMultiPolygon;
+}
+
 }  // namespace
 
-void write(const std::string& path, const std::string& driver_name, const std::string& layer_name,
-           std::span<const io::TriangulatedPolygon> results, const Source* source,
-           std::uint32_t srid) {
+std::vector<std::string> write(const std::string& path, const std::string& driver_name,
+                               const std::string& layer_name,
+                               std::span<const io::TriangulatedPolygon> results,
+                               const Source* source, std::uint32_t srid) {
   start_gdal();
   CPLErrorReset();
   GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(driver_name.c_str());
   if (driver == nullptr)
     throw std::runtime_error("cannot write " + path + ": no GDAL driver " + driver_name);
+  // pear's own input: its GeoJSON properties become the fields.
+  const std::shared_ptr<const Source> own = source ? nullptr : properties_source(results, path);
+  if (own) source = own.get();
   VSIStatBufL stat;
   if (VSIStatL(path.c_str(), &stat) == 0 && driver->Delete(path.c_str()) != CE_None)
     VSIUnlink(path.c_str());  // not a dataset of this driver: an ordinary file
   CPLErrorReset();
   GDALDatasetUniquePtr dataset(driver->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
   if (!dataset) cannot_write(path, "GDAL cannot create it");
-  const bool with_z = std::any_of(results.begin(), results.end(),
-                                  [](const io::TriangulatedPolygon& r) { return !r.z.empty(); });
   const auto srs = reference(source, srid);
+  std::vector<std::string> notes;
   OGRLayer* layer = dataset->CreateLayer(layer_name.c_str(), srs.get(),
-                                         with_z ? wkbMultiPolygon25D : wkbMultiPolygon, nullptr);
+                                         geometry_type(results, path, notes), nullptr);
   if (layer == nullptr) cannot_write(path, "layer '" + layer_name + "'");
-  const std::vector<int> map = create_fields(*layer, source, path);
+  const OutputFields fields = create_fields(*layer, source, path, notes);
   const bool transaction = dataset->StartTransaction() == OGRERR_NONE;  // GeoPackage: much faster
   for (std::size_t first = 0; first < results.size();) {
     std::size_t last = first + 1;
     while (last < results.size() && results[last].feature_index == results[first].feature_index)
       ++last;
-    write_feature(*layer, results.subspan(first, last - first), source, map, path);
+    write_feature(*layer, results.subspan(first, last - first), source, fields, path);
     first = last;
   }
   if (transaction && dataset->CommitTransaction() != OGRERR_NONE) cannot_write(path, "commit");
   GDALClose(GDALDataset::ToHandle(dataset.release()));
   if (CPLGetLastErrorType() >= CE_Failure) cannot_write(path, "closing it");
+  return notes;
 }
 
 #else  // built without GDAL: nothing here is reached
@@ -466,8 +511,9 @@ bool is_writable_driver(const std::string&) {
 std::string extension_of_driver(const std::string&) {
   return "";
 }
-void write(const std::string& path, const std::string&, const std::string&,
-           std::span<const io::TriangulatedPolygon>, const Source*, std::uint32_t) {
+std::vector<std::string> write(const std::string& path, const std::string&, const std::string&,
+                               std::span<const io::TriangulatedPolygon>, const Source*,
+                               std::uint32_t) {
   throw std::runtime_error("cannot write " + path + ": this pear was built without GDAL");
 }
 

@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "pear/io.hpp"
 
@@ -53,12 +54,17 @@ bool is_writable_driver(const std::string& name);
 std::string extension_of_driver(const std::string& name);
 
 /// Writes one layer: one feature per input feature, a MultiPolygon of its polygons' triangles
-/// (with z when the input has it), the source feature's FID and attribute values under the
-/// source layer's field definitions, pear's fields, and the source layer's spatial reference
-/// (else EPSG:srid when srid is not 0). An existing file is replaced. Throws
-/// std::runtime_error naming the path.
-void write(const std::string& path, const std::string& driver, const std::string& layer_name,
-           std::span<const io::TriangulatedPolygon> results, const Source* source,
-           std::uint32_t srid);
+/// (with z and m when the input has them), the source's fields and each feature's values,
+/// pear's fields (pear_fid: the source feature's FID or feature_index, pear_tris, pear_stat),
+/// and the source layer's spatial reference (else EPSG:srid when srid is not 0). The source is
+/// the GDAL layer read, else the GeoJSON features' properties (each member a field, typed by
+/// its values: integer, real, boolean, JSON for objects and arrays, text for a mix). A field
+/// keeps its name unless one before it (the source's come first) has that name, ignoring
+/// case: then it is written as name2 (or name3, ...) and a note (returned) says so. An
+/// existing file is replaced. Throws std::runtime_error naming the path.
+std::vector<std::string> write(const std::string& path, const std::string& driver,
+                               const std::string& layer_name,
+                               std::span<const io::TriangulatedPolygon> results,
+                               const Source* source, std::uint32_t srid);
 
 }  // namespace pear::cli::gis

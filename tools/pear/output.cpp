@@ -188,14 +188,15 @@ OutputPlan plan_output(const std::optional<std::string>& output, std::optional<F
   return plan;
 }
 
-void write_output(const OutputPlan& plan, const std::string& input,
-                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid,
-                  const gis::Source* source, const std::string& layer_name) {
+std::vector<std::string> write_output(const OutputPlan& plan, const std::string& input,
+                                      std::span<const io::TriangulatedPolygon> results,
+                                      std::uint32_t srid, const gis::Source* source,
+                                      const std::string& layer_name) {
   const OutputFormat format = *plan.format;
   if (plan.path == "-") {
     write(format, std::cout, input, results, srid);
     std::cout.flush();
-    return;
+    return {};
   }
   const std::vector<fs::path> files = output_files(plan, input);
   if (format == OutputFormat::gdal)
@@ -207,11 +208,12 @@ void write_output(const OutputPlan& plan, const std::string& input,
     io::write_node_ele(node, ele, results);
     if (!node.flush()) cannot_write(files[0].string());
     if (!ele.flush()) cannot_write(files[1].string());
-    return;
+    return {};
   }
   std::ofstream out = open(files[0]);
   write(format, out, input, results, srid);
   if (!out.flush()) cannot_write(files[0].string());
+  return {};
 }
 
 }  // namespace pear::cli

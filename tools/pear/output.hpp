@@ -34,12 +34,14 @@ struct OutputPlan {
 OutputPlan plan_output(const std::optional<std::string>& output, std::optional<FormatChoice> format,
                        std::span<const Input> inputs);
 
-/// Writes one input's results as the plan says. Throws std::runtime_error if it cannot.
+/// Writes one input's results as the plan says; returns notes for stderr (a GDAL output's
+/// renamed fields). Throws std::runtime_error if it cannot.
 /// `srid` (0: none) is the input's spatial reference, which the GeoJSON output names; `source`
 /// the GDAL layer it came from (fields, FIDs, reference system for a GDAL output), or null;
 /// `layer_name` names the output layer (empty: the input file's stem).
-void write_output(const OutputPlan& plan, const std::string& input,
-                  std::span<const io::TriangulatedPolygon> results, std::uint32_t srid,
-                  const gis::Source* source, const std::string& layer_name);
+std::vector<std::string> write_output(const OutputPlan& plan, const std::string& input,
+                                      std::span<const io::TriangulatedPolygon> results,
+                                      std::uint32_t srid, const gis::Source* source,
+                                      const std::string& layer_name);
 
 }  // namespace pear::cli

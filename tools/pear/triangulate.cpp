@@ -166,7 +166,7 @@ const Diagnostic* explaining(Status status, std::span<const Diagnostic> diagnost
 }
 
 // Reports one polygon's result: its stats line, its problems (and the test build's fault).
-// The feature's polygon, z and properties move into what is written.
+// The feature's polygon, z, m and properties move into what is written.
 io::TriangulatedPolygon report_one(const Settings& s, io::Feature& feature, PolygonResult result,
                                    const std::string& file, std::size_t index, Totals& totals,
                                    Progress& progress) {
@@ -213,6 +213,7 @@ io::TriangulatedPolygon report_one(const Settings& s, io::Feature& feature, Poly
   return {.polygon = std::move(feature.polygon),
           .triangles = std::move(result.triangles),
           .z = std::move(feature.z),
+          .m = std::move(feature.m),
           .properties = std::move(feature.properties),
           .feature_index = feature.feature_index,
           .status = result.status};
@@ -290,7 +291,9 @@ class Group {
           ++totals.polygons;
         }
         if (plan.format)
-          write_output(plan, f.name, results, f.read.read.srid, f.read.source.get(), f.read.layer);
+          for (const std::string& note : write_output(plan, f.name, results, f.read.read.srid,
+                                                      f.read.source.get(), f.read.layer))
+            progress.message(note);
       } catch (const std::bad_alloc&) {
         fail(f.name + ": out of memory while reporting or writing it");
       } catch (const std::exception& e) {  // an unwritable output, named with the reason
