@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """pear.triangulate_many over shapely polygons: through WKB, through their GEOS handles (shapely
-1.8), against ragged arrays and the per-polygon loop over numpy arrays, in one process.
+1.8) or to_ragged_array (shapely 2), against ragged arrays and the per-polygon loop over numpy
+arrays, in one process.
 
 usage: /usr/bin/python3 bench/python/bench_shapely.py [--build BUILD] [--rounds N]
            [--folder counties]
@@ -36,24 +37,35 @@ def candidates(pear, polygons):
         for c, e in polygons:
             triangulate(c, e, strict=False)
 
-    def shapely_batch(threads, geos):
+    def shapely_batch(threads, way):
         def run():
-            pear._many._read_geos_handles = geos
+            pear._many._read_geos_handles = way == "GEOS"
+            pear._many._read_ragged_arrays = way == "to_ragged_array"
             try:
                 pear.triangulate_many(shapes, threads=threads)
             finally:
-                pear._many._read_geos_handles = True
+                pear._many._read_geos_handles = pear._many._read_ragged_arrays = True
         return run
 
     def ragged_batch(threads):
         return lambda: pear.triangulate_many(coords, rings, first_ring, threads=threads)
 
+    way = reading_way(pear)
     return {"per-polygon loop (numpy arrays)": loop,
-            "triangulate_many(shapely), WKB, 1 thread": shapely_batch(1, geos=False),
-            "triangulate_many(shapely), GEOS, 1 thread": shapely_batch(1, geos=True),
-            "triangulate_many(shapely), GEOS, 2 threads": shapely_batch(2, geos=True),
+            "triangulate_many(shapely), WKB, 1 thread": shapely_batch(1, "WKB"),
+            f"triangulate_many(shapely), {way}, 1 thread": shapely_batch(1, way),
+            f"triangulate_many(shapely), {way}, 2 threads": shapely_batch(2, way),
             "triangulate_many(ragged), 1 thread": ragged_batch(1),
             "triangulate_many(ragged), 2 threads": ragged_batch(2)}
+
+
+def reading_way(pear):
+    """How triangulate_many reads shapely geometries here: shapely 1.8's GEOS handles, shapely
+    2's to_ragged_array, or WKB (a module without the GEOS reader under shapely 1.8)."""
+    import shapely
+    if hasattr(shapely, "to_ragged_array"):
+        return "to_ragged_array"
+    return "GEOS" if pear._many._reads_geos_handles() else "WKB"
 
 
 def uptime():
@@ -68,8 +80,9 @@ def main():
     args = parser.parse_args()
     sys.path.insert(0, os.path.join(args.build, "python"))
     import pear
-    print(f"pear from {os.path.dirname(pear.__file__)}; GEOS reader: "
-          f"{pear._many._reads_geos_handles()}; {os.cpu_count()} CPUs")
+    import shapely
+    print(f"pear from {os.path.dirname(pear.__file__)}; shapely {shapely.__version__} read "
+          f"through {reading_way(pear)}; {os.cpu_count()} CPUs")
     print(f"uptime before: {uptime()}")
     polygons = load(args.folder)
     runs = candidates(pear, polygons)
@@ -84,10 +97,11 @@ def main():
     for name, seconds in medians.items():
         print(f"| {name} | {seconds * 1e3:.2f} | {seconds / len(polygons) * 1e6:.2f} "
               f"| {ratios[name]:.2f}x | {cpu[name] * 1e3:.2f} |")
+    way = reading_way(pear)
     wkb = medians["triangulate_many(shapely), WKB, 1 thread"]
-    geos = medians["triangulate_many(shapely), GEOS, 1 thread"]
-    print(f"\nGEOS against WKB (1 thread): {wkb / geos:.2f}x; GEOS 2 threads against 1: "
-          f"{geos / medians['triangulate_many(shapely), GEOS, 2 threads']:.2f}x")
+    one = medians[f"triangulate_many(shapely), {way}, 1 thread"]
+    print(f"\n{way} against WKB (1 thread): {wkb / one:.2f}x; {way} 2 threads against 1: "
+          f"{one / medians[f'triangulate_many(shapely), {way}, 2 threads']:.2f}x")
     print(f"uptime after: {uptime()}")
 
 

@@ -139,6 +139,40 @@ def _vectorised_wkb(geometries):
         return None  # something that is not a geometry: the module names it
 
 
+def _ragged_arrays(geometries):
+    """(coords, ring_offsets, polygon_offsets, geometry_offsets) from shapely 2's
+    to_ragged_array (in C over the array: no WKB in between, a quarter less time than to_wkb
+    and reading it), laid out as the WKB reader lays them out (x and y, rings closed, an empty
+    polygon no polygon); None where shapely has no to_ragged_array (1.8) or refuses the
+    geometries (other types, collections, something that is no geometry): WKB takes them."""
+    import shapely
+    to_ragged_array = getattr(shapely, "to_ragged_array", None)
+    if to_ragged_array is None:
+        return None
+    try:
+        kind, coords, offsets = to_ragged_array(np.asarray(geometries, dtype=object),
+                                                include_z=False)
+    except (TypeError, ValueError):
+        return None
+    if kind == shapely.GeometryType.POLYGON:
+        rings, polygons = offsets
+        geometry = np.arange(len(polygons), dtype=np.int64)
+    elif kind == shapely.GeometryType.MULTIPOLYGON:
+        rings, polygons, geometry = offsets
+    else:
+        return None
+    rings, polygons, geometry = (np.asarray(o, dtype=np.int64) for o in (rings, polygons, geometry))
+    # An empty polygon (or None) is a polygon of no rings here, and no polygon in WKB.
+    kept = np.diff(polygons) > 0
+    kept_before = np.concatenate(([0], np.cumsum(kept)))
+    polygons = np.append(polygons[:-1][kept], polygons[-1])
+    return np.ascontiguousarray(coords, dtype=np.float64), rings, polygons, kept_before[geometry]
+
+
+#: Whether shapely 2 geometries are read through to_ragged_array (False: as WKB; the tests
+#: compare the two).
+_read_ragged_arrays = True
+
 #: Whether shapely 1.8 geometries are read through their GEOS handles (False: as WKB, the
 #: path every other input takes; the benchmark and the tests compare the two).
 _read_geos_handles = True
@@ -168,19 +202,23 @@ def _as_sequence(geometries):
 def _read_geometries(geometries):
     """(coords, ring_offsets, polygon_offsets, geometry_offsets) of a sequence of shapely
     geometries, WKB values or None: shapely 1.8's through their GEOS handles where they all
-    can be, else from WKB; what is none of these is passed on for the module to name."""
+    can be, shapely 2's through to_ragged_array, else from WKB; what is none of these is passed
+    on for the module to name."""
     geometries = _as_sequence(geometries)
     # WKB goes to the module as it is (it names any element that is not WKB): a Python test of
     # every element would cost a tenth of a small polygon's triangulation.
     first = next((v for v in geometries if v is not None), None)
     if first is None or isinstance(first, (bytes, bytearray)):
         return _pear.read_wkb(geometries)
-    # shapely 1.8: the module finds shapely's libgeos_c itself (None for shapely 2, whose
-    # to_wkb is vectorised, or a module built without geos_c.h).
+    # shapely 1.8: the module finds shapely's libgeos_c itself (None for shapely 2, which has
+    # to_ragged_array and to_wkb over arrays, or a module built without geos_c.h).
     if _read_geos_handles and _pear.has_geos_reader:
         flat = _pear.read_geos(geometries)
         if flat is not None:
             return flat
+    ragged = _ragged_arrays(geometries) if _read_ragged_arrays else None
+    if ragged is not None:
+        return ragged
     vectorised = _vectorised_wkb(geometries)
     if vectorised is not None:
         return _pear.read_wkb(vectorised)
@@ -198,8 +236,9 @@ def triangulate_many(data, ring_offsets=None, polygon_offsets=None, geometry_off
     data: an (N, 2) float64 array (or (N, 3): z kept, x and y triangulated) with integer
     ring_offsets and polygon_offsets (shapely 2's to_ragged_array layout:
     ``triangulate_many(coords, *offsets)``; geometry_offsets for MultiPolygons); or a sequence
-    of shapely Polygons/MultiPolygons, of WKB bytes (Polygon or MultiPolygon, any byte order,
-    ISO or EWKB, Z/M dropped), or of None, a GeoSeries among them.
+    of shapely Polygons/MultiPolygons (shapely 2's read by to_ragged_array), of WKB bytes
+    (Polygon or MultiPolygon, any byte order, ISO or EWKB, Z/M dropped), or of None, a
+    GeoSeries among them.
     Options as for triangulate; threads=0 uses every hardware thread.
     """
     options = dict(algorithm=algorithm, heuristic=heuristic, delaunay=delaunay, threads=threads,
