@@ -154,3 +154,24 @@ def cli_stats(path, *options):
                           *options], capture_output=True, text=True, timeout=600)
     lines = [json.loads(line) for line in run.stdout.splitlines() if line.strip()]
     return {(pathlib.Path(s["file"]).name, s["index"]): s for s in lines}
+
+
+BATCH_ARRAYS = ("coordinates", "ring_offsets", "polygon_offsets", "geometry_offsets",
+                "triangles", "triangle_offsets", "status", "diagnostic_issue")
+
+
+def through_wkb(pear, switch, data, **options):
+    """triangulate_many(data) with pear._many's `switch` off: geometries read as WKB."""
+    setattr(pear._many, switch, False)
+    try:
+        return pear.triangulate_many(data, **options)
+    finally:
+        setattr(pear._many, switch, True)
+
+
+def assert_reads_as_wkb(pear, switch, data):
+    """triangulate_many(data) gives the same arrays as through WKB; returns its result."""
+    direct, by_wkb = pear.triangulate_many(data), through_wkb(pear, switch, data)
+    for name in BATCH_ARRAYS:
+        assert np.array_equal(getattr(direct, name), getattr(by_wkb, name)), name
+    return direct

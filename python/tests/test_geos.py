@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import pear
+import polygons
 from polygons import SQUARE_WITH_HOLE, counties_frame
 
 geometry = pytest.importorskip("shapely.geometry")
@@ -17,25 +18,17 @@ SQUARE = geometry.Polygon(SQUARE_WITH_HOLE[:4], [SQUARE_WITH_HOLE[4:]])
 TRIANGLE = geometry.Polygon([(20, 0), (30, 0), (30, 10)])
 
 
-def through_wkb(data, **options):
-    pear._many._read_geos_handles = False
-    try:
-        return pear.triangulate_many(data, **options)
-    finally:
-        pear._many._read_geos_handles = True
-
-
 def read_by_geos(data):
     """The module's reading of data, None where it leaves it to WKB."""
     return pear._pear.read_geos(data)
 
 
+def through_wkb(data, **options):
+    return polygons.through_wkb(pear, "_read_geos_handles", data, **options)
+
+
 def assert_same(data):
-    by_geos, by_wkb = pear.triangulate_many(data), through_wkb(data)
-    for name in ("coordinates", "ring_offsets", "polygon_offsets", "geometry_offsets",
-                 "triangles", "triangle_offsets", "status", "diagnostic_issue"):
-        assert np.array_equal(getattr(by_geos, name), getattr(by_wkb, name)), name
-    return by_geos
+    return polygons.assert_reads_as_wkb(pear, "_read_geos_handles", data)
 
 
 def test_every_polygonal_form_reads_as_its_wkb():

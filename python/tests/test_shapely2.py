@@ -2,10 +2,10 @@
 arrays, results and errors as through their WKB (pear._many._read_ragged_arrays = False), for
 every polygonal form. Skips with shapely 1.8 (Debian 12's), which has no to_ragged_array: there
 test_geos.py covers the GEOS reader instead."""
-import numpy as np
 import pytest
 
 import pear
+import polygons
 from polygons import SQUARE_WITH_HOLE, counties_frame
 
 shapely = pytest.importorskip("shapely")
@@ -19,19 +19,11 @@ TRIANGLE = shapely.Polygon([(20, 0), (30, 0), (30, 10)])
 
 
 def through_wkb(data, **options):
-    pear._many._read_ragged_arrays = False
-    try:
-        return pear.triangulate_many(data, **options)
-    finally:
-        pear._many._read_ragged_arrays = True
+    return polygons.through_wkb(pear, "_read_ragged_arrays", data, **options)
 
 
 def assert_same(data):
-    by_ragged, by_wkb = pear.triangulate_many(data), through_wkb(data)
-    for name in ("coordinates", "ring_offsets", "polygon_offsets", "geometry_offsets",
-                 "triangles", "triangle_offsets", "status", "diagnostic_issue"):
-        assert np.array_equal(getattr(by_ragged, name), getattr(by_wkb, name)), name
-    return by_ragged
+    return polygons.assert_reads_as_wkb(pear, "_read_ragged_arrays", data)
 
 
 def test_every_polygonal_form_reads_as_its_wkb():
