@@ -191,6 +191,10 @@ def _as_sequence(geometries):
         return [geometries]
     if isinstance(geometries, (list, np.ndarray)):
         return geometries
+    if hasattr(type(geometries), "__array__"):  # a GeoSeries, a pandas Series: their array
+        array = np.asarray(geometries, dtype=object)  # (list() cost 1 ms on the counties)
+        if array.ndim == 1:
+            return array
     try:
         return list(geometries)
     except TypeError:

@@ -5,6 +5,7 @@ import numpy as np
 import pytest
 
 import pear
+import polygons
 from polygons import BOWTIE, SQUARE_WITH_HOLE, exact_check
 
 geometry = pytest.importorskip("shapely.geometry")
@@ -255,3 +256,20 @@ def test_mangled_wkb_is_an_error_naming_a_byte_inside_or_a_result():
             continue
         assert 16 * len(result.coordinates) <= len(value)
         assert len(result.geometry_offsets) == 3
+
+
+def test_a_geoseries_and_a_series_of_wkb_read_as_their_list():
+    """Taken as their arrays (no Python loop over the rows), with None and a non-default
+    index: the same arrays as from the list of the same values."""
+    geopandas = pytest.importorskip("geopandas")
+    shapes = [geometry.Polygon(SQUARE_WITH_HOLE[:4], [SQUARE_WITH_HOLE[4:]]), None,
+              geometry.MultiPolygon([geometry.Polygon([(20, 0), (30, 0), (30, 10)]),
+                                     geometry.Polygon([(40, 0), (50, 0), (50, 10)])])]
+    series = geopandas.GeoSeries(shapes, index=[7, 3, 5])
+    values = [None if s is None else s.wkb for s in shapes]
+    wkb_series = geopandas.pd.Series(values, index=[1, 2, 0])
+    for data, as_list in ((series, shapes), (wkb_series, values)):
+        got, want = pear.triangulate_many(data), pear.triangulate_many(as_list)
+        assert got.geometry_offsets.tolist() == [0, 1, 1, 3]
+        for name in polygons.BATCH_ARRAYS:
+            assert np.array_equal(getattr(got, name), getattr(want, name)), name
