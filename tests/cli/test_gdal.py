@@ -220,7 +220,7 @@ class Gdal(unittest.TestCase):
         # GeoJSON driver makes of the file (ogr2ogr), pear's fields after them.
         source = self.write_geojson("props.geojson", lambda k, p: {
             "flag": k % 2 == 0, "big": 5_000_000_000 + k, "tags": {"k": [k, "x"]},
-            "pear_tris": -k, "Name": "upper " + p["name"]})
+            "pear_tris": -k, "Name": "upper " + p["name"], "huge": 10 ** 20})
         for ext in ("gpkg", "fgb"):
             with self.subTest(ext):
                 output, reference = self.path("props." + ext), self.path("props-gdal." + ext)
@@ -229,6 +229,9 @@ class Gdal(unittest.TestCase):
                 self.assertIn(output + ": the input's field 'Name' is written as 'Name2'", r.stderr)
                 self.assertIn(output + ": pear's field 'pear_tris' is written as 'pear_tris2'",
                               r.stderr)
+                # past int64: clamped by GDAL's JSON reader (ogr2ogr's too), and said
+                self.assertIn(output + ": feature 0's property 'huge' is an integer at or past "
+                              "64 bits' limit, written as 9223372036854775807", r.stderr)
                 self.assertEqual(run("ogr2ogr", "-f", FORMATS[ext], reference, source,
                                      "-skipfailures").returncode, 0)
                 fields = field_types(output)

@@ -461,7 +461,9 @@ std::vector<std::string> write(const std::string& path, const std::string& drive
   if (driver == nullptr)
     throw std::runtime_error("cannot write " + path + ": no GDAL driver " + driver_name);
   // pear's own input: its GeoJSON properties become the fields.
-  const std::shared_ptr<const Source> own = source ? nullptr : properties_source(results, path);
+  std::vector<std::string> notes;
+  const std::shared_ptr<const Source> own =
+      source ? nullptr : properties_source(results, path, notes);
   if (own) source = own.get();
   VSIStatBufL stat;
   if (VSIStatL(path.c_str(), &stat) == 0 && driver->Delete(path.c_str()) != CE_None)
@@ -470,7 +472,6 @@ std::vector<std::string> write(const std::string& path, const std::string& drive
   GDALDatasetUniquePtr dataset(driver->Create(path.c_str(), 0, 0, 0, GDT_Unknown, nullptr));
   if (!dataset) cannot_write(path, "GDAL cannot create it");
   const auto srs = reference(source, srid);
-  std::vector<std::string> notes;
   OGRLayer* layer = dataset->CreateLayer(layer_name.c_str(), srs.get(),
                                          geometry_type(results, path, notes), nullptr);
   if (layer == nullptr) cannot_write(path, "layer '" + layer_name + "'");

@@ -4,6 +4,7 @@
 #include <cpl_json.h>
 
 #include <algorithm>
+#include <limits>
 #include <map>
 #include <stdexcept>
 #include <utility>
@@ -45,15 +46,21 @@ Kind merge(Kind a, Kind b) {
   return number(a) && number(b) ? std::max(a, b) : Kind::text;
 }
 
-std::unique_ptr<OGRFieldDefn> field_definition(const std::string& name, Kind kind) {
-  const OGRFieldType type = kind == Kind::boolean || kind == Kind::integer ? OFTInteger
-                            : kind == Kind::integer64                      ? OFTInteger64
-                            : kind == Kind::real                           ? OFTReal
-                                                                           : OFTString;
-  auto field = std::make_unique<OGRFieldDefn>(name.c_str(), type);
-  if (kind == Kind::boolean) field->SetSubType(OFSTBoolean);
-  if (kind == Kind::json) field->SetSubType(OFSTJSON);
-  return field;
+/// The field's type for values of `kind` (a field of only nulls is text, as in GDAL).
+void set_field_kind(OGRFieldDefn& field, Kind kind) {
+  field.SetType(kind == Kind::boolean || kind == Kind::integer ? OFTInteger
+                : kind == Kind::integer64                      ? OFTInteger64
+                : kind == Kind::real                           ? OFTReal
+                                                               : OFTString);
+  field.SetSubType(kind == Kind::boolean ? OFSTBoolean : kind == Kind::json ? OFSTJSON : OFSTNone);
+}
+
+/// Whether an integer is at int64's limit, where GDAL's JSON reader (json-c) clamps larger ones.
+bool at_integer_limit(const CPLJSONObject& value) {
+  if (value.GetType() != CPLJSONObject::Type::Long) return false;
+  const GInt64 number = value.ToLong();
+  return number == std::numeric_limits<GInt64>::max() ||
+         number == std::numeric_limits<GInt64>::min();
 }
 
 /// One property's value into a field of its merged kind: a string as it is, any other value
@@ -91,7 +98,8 @@ std::vector<std::pair<std::size_t, std::unique_ptr<CPLJSONDocument>>> parse_prop
 }  // namespace
 
 std::shared_ptr<const Source> properties_source(std::span<const io::TriangulatedPolygon> results,
-                                                const std::string& path) {
+                                                const std::string& path,
+                                                std::vector<std::string>& notes) {
   const auto parsed = parse_properties(results, path);
   if (parsed.empty()) return nullptr;
   std::map<std::string, int> field_of_name;
@@ -99,21 +107,31 @@ std::shared_ptr<const Source> properties_source(std::span<const io::Triangulated
   auto source = std::make_shared<Source>();
   source->own_fields.reset(new OGRFeatureDefn("properties"));
   source->own_fields->Reference();
-  std::vector<std::string> names;
   for (const auto& [index, document] : parsed)
     for (const CPLJSONObject& member : document->GetRoot().GetChildren()) {
       const auto [at, added] = field_of_name.try_emplace(member.GetName(), kinds.size());
-      if (added) kinds.push_back(Kind::none), names.push_back(member.GetName());
+      if (added) {
+        OGRFieldDefn field(member.GetName().c_str(), OFTString);  // typed once all are met
+        source->own_fields->AddFieldDefn(&field);
+        kinds.push_back(Kind::none);
+      }
       kinds[at->second] = merge(kinds[at->second], kind_of(member));
     }
-  for (std::size_t f = 0; f < kinds.size(); ++f) {
-    source->own_fields->AddFieldDefn(field_definition(names[f], kinds[f]).get());
-  }
+  for (std::size_t f = 0; f < kinds.size(); ++f)
+    set_field_kind(*source->own_fields->GetFieldDefn(static_cast<int>(f)), kinds[f]);
+  std::vector<bool> clamped(kinds.size());
   for (const auto& [index, document] : parsed) {
     OGRFeatureUniquePtr feature(OGRFeature::CreateFeature(source->own_fields.get()));
     for (const CPLJSONObject& member : document->GetRoot().GetChildren()) {
       const int field = field_of_name.at(member.GetName());
       set_property(*feature, field, kinds[field], member);
+      if (!clamped[field] && at_integer_limit(member)) {
+        clamped[field] = true;
+        notes.push_back(path + ": feature " + std::to_string(index) + "'s property '" +
+                        member.GetName() +
+                        "' is an integer at or past 64 bits' limit, written as " +
+                        std::to_string(member.ToLong()) + " (GDAL's JSON reader clamps it)");
+      }
     }
     if (source->features.size() <= index) source->features.resize(index + 1);
     source->features[index] = std::move(feature);

@@ -36,9 +36,11 @@ class Source {
 
 /// pear's own input (GeoJSON) as a Source: the members of the features' properties become
 /// fields, in the order first met, each typed by all its values (gis.hpp's write says how);
-/// features by feature_index. Null when no feature has properties. Throws std::runtime_error
+/// features by feature_index. Null when no feature has properties. A note names an integer at
+/// int64's limit (GDAL's JSON reader clamps larger ones to it). Throws std::runtime_error
 /// naming `path` (the output) and the feature when GDAL's JSON parser refuses properties.
 std::shared_ptr<const Source> properties_source(std::span<const io::TriangulatedPolygon> results,
-                                                const std::string& path);
+                                                const std::string& path,
+                                                std::vector<std::string>& notes);
 
 }  // namespace pear::cli::gis
