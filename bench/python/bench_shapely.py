@@ -10,7 +10,8 @@ Imports pear from BUILD/python (default build/). The folder's polygons are loade
 numpy arrays (coordinates without closing points, ring ends), as ragged arrays and as shapely
 geometries. Rounds interleave the candidates, each timed run after an untimed one
 (bench_python.measure); the table gives medians over the rounds and each one's speed
-against the per-polygon loop. `uptime` is printed before and after. CI does not run this.
+against the per-polygon loop; then the loop against the shapely batch with calls back to
+back (bench_python.steady_scaling). `uptime` is printed before and after. CI does not run this.
 """
 import argparse
 import os
@@ -19,7 +20,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from bench_python import ROOT, load, measure, ragged  # noqa: E402 (this folder)
+from bench_python import ROOT, load, measure, ragged, steady_scaling  # noqa: E402
 
 
 def shapely_polygons(polygons):
@@ -102,6 +103,12 @@ def main():
     one = medians[f"triangulate_many(shapely), {way}, 1 thread"]
     print(f"\n{way} against WKB (1 thread): {wkb / one:.2f}x; {way} 2 threads against 1: "
           f"{one / medians[f'triangulate_many(shapely), {way}, 2 threads']:.2f}x")
+    # Calls back to back, as a long job makes them: the rounds above start each candidate on a
+    # core that idled through the one before (bench_python.measure says what that costs).
+    for threads in (1, 2):
+        name = f"triangulate_many(shapely), {way}, {threads} thread{'s' * (threads > 1)}"
+        print(f"steady state, per-polygon loop / {name}: "
+              f"{steady_scaling(runs[reference], runs[name]):.2f}x")
     print(f"uptime after: {uptime()}")
 
 
