@@ -429,6 +429,7 @@ FlatPolygons read_wkb_sequence(py::handle sequence) {
   for (const Value& v : places)
     values.emplace_back(v.in_place ? v.in_place : copies.data() + v.offset, v.size);
   FlatPolygons flat;
+  flat.coordinates = spare_coordinates();
   std::string error;
   std::size_t index = 0, offset = 0;
   {
@@ -471,8 +472,45 @@ py::array points_array(FlatPolygons&& flat) {
   return py::array_t<double>({static_cast<py::ssize_t>(n), py::ssize_t{3}}, owned->data(), owner);
 }
 
+namespace {
+/// The buffer spare_coordinates hands out: the largest kept, between 64 kB and 64 MB (smaller
+/// ones come from malloc's own free lists; larger ones are not worth holding idle). Only
+/// touched with the GIL held: a capsule's destructor runs with it, readers take it before
+/// releasing it. Never destroyed: arrays may be freed as the interpreter exits.
+std::vector<double>& kept_coordinates() {
+  static auto* kept = new std::vector<double>();
+  return *kept;
+}
+
+void keep_coordinates(std::vector<double>&& xy) {
+  constexpr std::size_t least = (64 << 10) / sizeof(double), most = (64 << 20) / sizeof(double);
+  const std::size_t capacity = xy.capacity();
+  if (capacity >= least && capacity <= most && capacity > kept_coordinates().capacity())
+    kept_coordinates() = std::move(xy);
+}
+
+/// A batch read's (N, 2) coordinates, its buffer kept for the next read when freed.
+py::array coordinates_array(std::vector<double>&& xy) {
+  const auto points = static_cast<py::ssize_t>(xy.size() / 2);
+  auto* owned = new std::vector<double>(std::move(xy));
+  py::capsule owner(owned, [](void* p) {
+    auto* buffer = static_cast<std::vector<double>*>(p);
+    keep_coordinates(std::move(*buffer));
+    delete buffer;
+  });
+  return py::array_t<double>({points, py::ssize_t{2}}, owned->data(), owner);
+}
+}  // namespace
+
+std::vector<double> spare_coordinates() {
+  std::vector<double> spare = std::move(kept_coordinates());
+  kept_coordinates() = std::vector<double>();
+  spare.clear();
+  return spare;
+}
+
 py::tuple flat_arrays(FlatPolygons&& flat) {
-  return py::make_tuple(points_array(std::move(flat.coordinates)),
+  return py::make_tuple(coordinates_array(std::move(flat.coordinates)),
                         vector_array(std::move(flat.ring_offsets)),
                         vector_array(std::move(flat.polygon_offsets)),
                         vector_array(std::move(flat.geometry_offsets)));

@@ -106,8 +106,14 @@ FlatPolygons geometry_polygons(py::handle geometry, bool keep_z = false);
 /// Reads sequence[i] as WKB (bytes, bytearray or None) for every i, the GIL released while
 /// parsing; a ParseError becomes pear.WKBError naming i and the byte.
 FlatPolygons read_wkb_sequence(py::handle sequence);
-/// Flat polygons as numpy arrays: coordinates (N, 2), ring, polygon and geometry offsets.
+/// Flat polygons as numpy arrays: coordinates (N, 2), ring, polygon and geometry offsets. When
+/// the coordinates array is freed, its buffer is kept for the next batch read.
 py::tuple flat_arrays(FlatPolygons&& flat);
+/// An empty buffer for a batch read's coordinates: the one kept from the last coordinates
+/// array freed (flat_arrays), else a new one. Called with the GIL held. A read into fresh
+/// memory faulted its pages in (glibc gives large freed blocks back to the system), which
+/// cost as much as reading shapely's geometries through GEOS.
+std::vector<double> spare_coordinates();
 
 /// Bytes of one triangle as a WKB Polygon.
 inline constexpr std::size_t triangle_wkb_size = 1 + 4 + 4 + 4 + 4 * 16;

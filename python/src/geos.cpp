@@ -244,6 +244,7 @@ py::object read_geos(py::handle sequence) {
   const auto geometries = handles(sequence, shapely->geometry_type, held);
   if (!geometries) return py::none();
   FlatPolygons flat;
+  flat.coordinates = spare_coordinates();
   bool read = true;
   {
     py::gil_scoped_release release;

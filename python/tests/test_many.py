@@ -273,3 +273,32 @@ def test_a_geoseries_and_a_series_of_wkb_read_as_their_list():
         assert got.geometry_offsets.tolist() == [0, 1, 1, 3]
         for name in polygons.BATCH_ARRAYS:
             assert np.array_equal(getattr(got, name), getattr(want, name)), name
+
+
+def circles(count, shift):
+    """count 100-gons, shapely Polygons, moved by shift: 10,100 points for count=100."""
+    angles = np.linspace(0, 2 * np.pi, 100, endpoint=False)
+    ring = np.column_stack([np.cos(angles), np.sin(angles)])
+    return [geometry.Polygon(ring * 5 + (12 * k + shift, shift)) for k in range(count)]
+
+
+@pytest.mark.parametrize("as_wkb", [False, True])
+def test_a_freed_results_buffer_serves_the_next_read_and_no_live_one_changes(as_wkb):
+    """The coordinates buffer of a result freed is the next batch read's (no fresh pages to
+    fault in): never while any array still uses it, and the values are the new ones."""
+    first, second = circles(100, 0), circles(100, 1000)
+    if as_wkb:
+        first, second = [g.wkb for g in first], [g.wkb for g in second]
+    a = pear.triangulate_many(first)
+    a_coordinates, address = a.coordinates.copy(), a.coordinates.ctypes.data
+    view = a.coordinates[:10]  # keeps a's buffer alive after a is gone
+    del a
+    b = pear.triangulate_many(second)
+    assert b.coordinates.ctypes.data != address
+    assert np.array_equal(view, a_coordinates[:10])
+    del view
+    other = np.ones_like(a_coordinates)  # malloc would give it a's memory, were it free
+    c = pear.triangulate_many(first)  # a's buffer, kept for the next read
+    assert c.coordinates.ctypes.data == address != other.ctypes.data
+    assert np.array_equal(c.coordinates, a_coordinates)
+    assert b.coordinates[0, 0] > 900 and c.ok and b.ok
