@@ -20,6 +20,7 @@ import argparse
 import json
 import os
 import pathlib
+import resource
 import statistics
 import sys
 import time
@@ -108,7 +109,7 @@ def candidates(pear, polygons, large):
     return runs
 
 
-def measure(runs, rounds, reference, warm_up=True):
+def measure(runs, rounds, reference, warm_up=True, faults=None):
     """Median wall-clock and CPU seconds per candidate, and the median of per-round wall-clock
     ratios to the reference. On a busy machine the CPU time of a one-thread candidate is the
     steadier figure (it does not count the time other processes hold the core). With warm_up
@@ -119,14 +120,20 @@ def measure(runs, rounds, reference, warm_up=True):
     candidate for its neighbour's idle core."""
     wall = {name: [] for name in runs}
     cpu = {name: [] for name in runs}
+    minor_faults = {name: [] for name in runs}
     for _ in range(rounds):
         for name, run in runs.items():
             if warm_up:
                 run()
+            start_faults = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
             start, start_cpu = time.perf_counter(), time.process_time()
             run()
             wall[name].append(time.perf_counter() - start)
             cpu[name].append(time.process_time() - start_cpu)
+            minor_faults[name].append(resource.getrusage(resource.RUSAGE_SELF).ru_minflt -
+                                      start_faults)
+    if faults is not None:  # the median minor page faults of a timed call, by candidate
+        faults.update({name: statistics.median(f) for name, f in minor_faults.items()})
     ratios = {name: statistics.median(r / t for r, t in zip(wall[reference], wall[name]))
               for name in runs}
     return ({name: statistics.median(t) for name, t in wall.items()},

@@ -11,7 +11,9 @@ numpy arrays (coordinates without closing points, ring ends), as ragged arrays a
 geometries. Rounds interleave the candidates, each timed run after an untimed one
 (bench_python.measure); the table gives medians over the rounds and each one's speed
 against the per-polygon loop; then the loop against the shapely batch with calls back to
-back (bench_python.steady_scaling). `uptime` is printed before and after. CI does not run this.
+back (bench_python.steady_scaling). Page faults: the median of the timed calls' minor faults
+(fresh pages that glibc gave back after the call before). `uptime` is printed before and after.
+CI does not run this.
 """
 import argparse
 import os
@@ -88,16 +90,17 @@ def main():
     polygons = load(args.folder)
     runs = candidates(pear, polygons)
     reference = "per-polygon loop (numpy arrays)"
-    medians, cpu, ratios = measure(runs, args.rounds, reference)
+    faults = {}
+    medians, cpu, ratios = measure(runs, args.rounds, reference, faults=faults)
     vertices = sum(len(c) for c, _ in polygons)
     print(f"\n{args.folder}: {len(polygons)} polygons, {vertices} vertices, median of "
           f"{args.rounds} rounds\n")
     print("| candidate | ms per pass | us per polygon | loop time / its time (median of rounds) "
-          "| CPU ms |")
-    print("|---|---|---|---|---|")
+          "| CPU ms | page faults a call |")
+    print("|---|---|---|---|---|---|")
     for name, seconds in medians.items():
         print(f"| {name} | {seconds * 1e3:.2f} | {seconds / len(polygons) * 1e6:.2f} "
-              f"| {ratios[name]:.2f}x | {cpu[name] * 1e3:.2f} |")
+              f"| {ratios[name]:.2f}x | {cpu[name] * 1e3:.2f} | {faults[name]:.0f} |")
     way = reading_way(pear)
     wkb = medians["triangulate_many(shapely), WKB, 1 thread"]
     one = medians[f"triangulate_many(shapely), {way}, 1 thread"]
