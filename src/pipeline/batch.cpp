@@ -1,5 +1,6 @@
 // pear::triangulate_batch: polygons cut into chunks of about equal vertex counts, each chunk
-// triangulated by one pooled engine on pear's scheduler, then gathered in polygon order.
+// triangulated by one pooled engine on pear's scheduler, its triangles written straight into
+// room saved for it in the result, whose gaps are then closed in polygon order.
 #include <algorithm>
 #include <chrono>
 #include <iterator>
