@@ -223,9 +223,9 @@ struct TriangulatedPolygon {
   std::vector<std::array<std::uint32_t, 3>> triangles = {};
   std::vector<std::uint32_t> part = {};
   std::vector<double> z = {};  ///< empty, or one per point (writers throw invalid_argument else)
-  /// Empty, or one m per point, as z. The writers below have no place for it (OBJ, GeoJSON:
-  /// RFC 7946 positions are x, y and an optional z, .node, SVG); the CLI writes it to GDAL
-  /// layers with M.
+  /// Empty, or one m per point, as z. The writers below do not write it (OBJ, SVG and GeoJSON
+  /// have no place for it: RFC 7946 positions are x, y and an optional z; .node could hold it
+  /// as a vertex attribute); the CLI writes it to GDAL layers with M.
   std::vector<double> m = {};
   std::string properties = {};  ///< a JSON object's text, or empty
   std::size_t feature_index = 0;
