@@ -468,7 +468,9 @@ TEST(Simplicity, UnresolvableConflictAgreesWithReferenceAndSweep) {
     SCOPED_TRACE("round " + std::to_string(round));
     const bool expected = Reference(polygon).unresolvable_at(*violation);
     ASSERT_EQ(check.unresolvable_conflict_at(polygon, *violation, RunContext{}), expected);
-    if (expected) EXPECT_TRUE(check.find_t_junctions(polygon, RunContext{}).conflict.has_value());
+    if (expected) {
+      EXPECT_TRUE(check.find_t_junctions(polygon, RunContext{}).conflict.has_value());
+    }
     ++(expected ? unresolvable : resolvable);
   }
   EXPECT_GT(unresolvable, 300);  // both outcomes were exercised
