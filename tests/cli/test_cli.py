@@ -149,6 +149,7 @@ class ExitCodes(Files):
             (["triangulate", "--gzip-limit", "1T", SOUTH_AFRICA], "--gzip-limit expects a size"),
             (["triangulate", "--gzip-limit", "99999999999G", SOUTH_AFRICA], "--gzip-limit expects"),
             (["stats", "--gzip-limit", "-1", SOUTH_AFRICA], "--gzip-limit expects a size"),
+            (["triangulate", "--profile", SOUTH_AFRICA], "--profile adds to the lines of --stats"),
             (["generate", "nonagon", "10"], "unknown kind"),
             (["generate", "star", "ten"], "N must be a positive integer"),
         ]:
@@ -671,6 +672,75 @@ class StatsAndGenerate(Files):
         [line] = stats_lines(r)
         self.assertEqual(line["vertices"], 100)
         self.assertIs(line["valid"], True)
+
+
+class Profile(Files):
+    """--stats --profile: each line's work, span and projected speedup (RunProfile)."""
+    THREADS = ["2", "4", "8", "16"]
+
+    def check_scaling_fields(self, line):
+        """Properties of Brent's bound: span <= work, 1 <= bound(t) <= t, non-decreasing in t."""
+        self.assertLessEqual({"work_ms", "span_ms", "projected_speedup"}, set(line))
+        self.assertGreater(line["work_ms"], 0)
+        self.assertGreater(line["span_ms"], 0)
+        self.assertLessEqual(line["span_ms"], line["work_ms"])
+        speedup = line["projected_speedup"]
+        self.assertEqual(sorted(speedup), sorted(self.THREADS))
+        bounds = [speedup[t] for t in self.THREADS]
+        for t, bound in zip(self.THREADS, bounds):
+            self.assertGreaterEqual(bound, 1.0)
+            self.assertLessEqual(bound, int(t))
+        self.assertEqual(bounds, sorted(bounds))
+        # Brent's bound never beats the critical path: work / span caps every thread count.
+        self.assertLessEqual(bounds[-1], line["work_ms"] / line["span_ms"] * (1 + 1e-9))
+
+    def test_every_algorithm_and_the_cdt_give_bounded_monotone_figures(self):
+        corpus.require(SOUTH_AFRICA)
+        vertices, holes = south_africa_counts()
+        for algorithm in ["sequential", "partition-and-cut", "mark-and-cut", "divide-and-conquer"]:
+            for cdt in [[], ["--cdt"]]:
+                with self.subTest(algorithm=algorithm, cdt=cdt):
+                    r = pear("triangulate", SOUTH_AFRICA, "--stats", "--profile", "--validate",
+                             "--algorithm", algorithm, "--partitions", "4", *cdt)
+                    self.assertEqual(r.returncode, 0, r.stderr)
+                    [line] = stats_lines(r)
+                    self.assertIs(line["valid"], True)
+                    self.assertEqual(line["triangles"], vertices + 2 * holes - 2)
+                    self.check_scaling_fields(line)
+
+    def test_parts_clipped_apart_project_a_speedup(self):
+        # 40,000 vertices cut into 8 chains: the clip phase has 8 tasks, so 2 threads halve
+        # part of the work and the bound exceeds 1 (a profile of one task per phase gives 1).
+        maze = pear("generate", "random", "40000", "--seed", "5")
+        self.assertEqual(maze.returncode, 0, maze.stderr)
+        r = pear("triangulate", "-", "--stats", "--profile", "--algorithm", "partition-and-cut",
+                 "--partitions", "8", "--threads", "1", stdin=maze.stdout)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        [line] = stats_lines(r)
+        self.check_scaling_fields(line)
+        self.assertGreater(line["projected_speedup"]["2"], 1.0)
+        self.assertLess(line["span_ms"], line["work_ms"])
+
+    def test_a_line_per_polygon_each_with_its_own_run(self):
+        multi = ('{"type":"MultiPolygon","coordinates":[[[[0,0],[4,0],[4,4],[0,4],[0,0]]],'
+                 '[[[10,0],[14,0],[14,4],[10,4],[10,0]],[[11,1],[11,3],[13,3],[13,1],[11,1]]]]}')
+        r = pear("triangulate", "-", "--stats", "--profile", stdin=multi)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        lines = stats_lines(r)
+        self.assertEqual([line["triangles"] for line in lines], [2, 8])
+        for line in lines:
+            self.check_scaling_fields(line)
+
+    def test_without_profile_no_scaling_fields(self):
+        r = pear("triangulate", "-", "--stats", stdin=SQUARE_WITH_HOLE)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        [line] = stats_lines(r)
+        self.assertFalse({"work_ms", "span_ms", "projected_speedup"} & set(line))
+
+    def test_bad_input_still_named_and_exit_one(self):
+        r = pear("triangulate", "-", "--stats", "--profile", stdin=BOWTIE)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("not_simple", r.stderr)
 
 
 if __name__ == "__main__":

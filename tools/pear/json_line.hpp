@@ -54,6 +54,12 @@ class JsonLine {
     text_.append(buffer, end);
     return *this;
   }
+  /// A nested object.
+  JsonLine& add(std::string_view key, const JsonLine& object) {
+    start(key);
+    text_ += object.str();
+    return *this;
+  }
   std::string str() const { return text_.empty() ? "{}" : text_ + "}"; }
 
  private:

@@ -1,5 +1,7 @@
 // `pear triangulate FILE...`: read, triangulate, optionally validate, report and write.
+#include <algorithm>
 #include <array>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -24,6 +26,7 @@ struct Settings {
   Options options;
   bool validate = false;
   bool stats = false;
+  bool profile = false;
   io::ReadOptions read;
   std::size_t gzip_limit = default_gzip_limit;
   std::optional<std::string> output;
@@ -62,6 +65,10 @@ options:
                       holes, triangles, status, algorithm, threads, cdt, ms (triangulation
                       only), min_angle_avg_deg, dev60_avg_deg (with --validate also valid,
                       area_rel_error)
+  --profile           with --stats: each polygon's run alone, its lines adding work_ms and
+                      span_ms (all tasks; the longest path through the phases) and
+                      projected_speedup, the bound work / time on 2, 4, 8 and 16 threads
+                      for the run's --partitions (docs/cli.md)
   -o OUT              write the triangulations: one file for one input; a directory (an
                       existing one, or a name ending in '/') for one output per input, named
                       after it; '-' for stdout. Two inputs that would write the same file, or
@@ -104,11 +111,13 @@ Settings parse(std::span<const std::string_view> arguments) {
     } else if (option == "--cdt") {
       args.no_value();
       s.options.delaunay = true;
-    } else if (option == "--validate" || option == "--stats" || option == "--keep-small-rings") {
+    } else if (option == "--validate" || option == "--stats" || option == "--profile" ||
+               option == "--keep-small-rings") {
       args.no_value();
-      (option == "--validate" ? s.validate
-       : option == "--stats"  ? s.stats
-                              : s.read.keep_small_rings) = true;
+      (option == "--validate"  ? s.validate
+       : option == "--stats"   ? s.stats
+       : option == "--profile" ? s.profile
+                               : s.read.keep_small_rings) = true;
     } else if (option == "-o" || option == "--output") {
       s.output = std::string(args.value());
     } else if (option == "--format") {
@@ -126,6 +135,7 @@ Settings parse(std::span<const std::string_view> arguments) {
   s.inputs = args.positionals();
   if (s.inputs.empty()) throw UsageError("triangulate needs at least one FILE (or '-' for stdin)");
   if (s.output == "-" && s.stats) throw UsageError("-o - and --stats would both write to stdout");
+  if (s.profile && !s.stats) throw UsageError("--profile adds to the lines of --stats: give both");
   return s;
 }
 
@@ -153,8 +163,9 @@ std::string display_name(const Input& input) {
 struct PolygonResult {
   std::vector<std::array<std::uint32_t, 3>> triangles;
   Status status = Status::ok;
-  std::span<const Diagnostic> diagnostics;
+  std::vector<Diagnostic> diagnostics;
   double ms = 0;
+  std::optional<RunProfile> profile;  ///< with --profile: this polygon's run alone
 };
 
 /// The diagnostic that says why the status is not ok (warnings about what was repaired, such as
@@ -163,6 +174,21 @@ const Diagnostic* explaining(Status status, std::span<const Diagnostic> diagnost
   for (const Diagnostic& d : diagnostics)
     if (status == Status::not_simple ? d.is_not_simple() : d.is_error()) return &d;
   return diagnostics.empty() ? nullptr : &diagnostics.front();
+}
+
+/// --profile's fields: the run's work and span, and its speedup bound on 2 to 16 threads (work
+/// over RunProfile::projected, Brent's bound per phase for the run's partitions).
+void add_profile(JsonLine& line, const RunProfile& profile) {
+  const double work = profile.work();
+  line.add("work_ms", 1000 * work).add("span_ms", 1000 * profile.span());
+  JsonLine speedups;
+  for (const unsigned threads : {2u, 4u, 8u, 16u}) {
+    const double projected = profile.projected(threads);
+    // projected >= work / threads but for rounding: the bound is kept within [1, threads].
+    const double bound = projected > 0 ? std::min(work / projected, double(threads)) : 1.0;
+    speedups.add(std::to_string(threads), bound);
+  }
+  line.add("projected_speedup", speedups);
 }
 
 // Reports one polygon's result: its stats line, its problems (and the test build's fault).
@@ -197,6 +223,7 @@ io::TriangulatedPolygon report_one(const Settings& s, io::Feature& feature, Poly
     line.add("cdt", s.options.delaunay);
     line.add("ms", result.ms).add("min_angle_avg_deg", q.min_angle_avg_deg);
     line.add("dev60_avg_deg", q.dev60_avg_deg);
+    if (result.profile) add_profile(line, *result.profile);
     if (s.validate) {
       ValidateOptions check;
       check.check_delaunay = s.options.delaunay;
@@ -233,47 +260,18 @@ class Group {
   }
   bool full() const { return vertices_ >= vertex_budget; }
 
-  /// Triangulates every polygon of the group as one batch, then reports and writes file by
-  /// file, in the order the files came.
+  /// Triangulates every polygon of the group as one batch (with --profile, one at a time),
+  /// then reports and writes file by file, in the order the files came.
   void flush(const Settings& s, const OutputPlan& plan, Totals& totals, Progress& progress) {
     if (files_.empty()) return;
-    const auto fail = [&](const std::string& message) {
-      progress.message(message);
-      totals.bad_input = true;
-      ++totals.failures;
-    };
-    std::vector<double> coordinates;
-    std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
-    coordinates.reserve(2 * vertices_);
-    for (const File& f : files_) {
-      for (const io::Feature& feature : f.read.read.features) {
-        for (const Ring& ring : feature.polygon) {
-          for (const Point& p : ring) coordinates.insert(coordinates.end(), {p.x, p.y});
-          ring_offsets.push_back(static_cast<std::int64_t>(coordinates.size() / 2));
-        }
-        polygon_offsets.push_back(static_cast<std::int64_t>(ring_offsets.size() - 1));
+    std::optional<Batch> together;
+    if (!s.profile) {
+      try {
+        together = triangulate_together(s.options);
+      } catch (const std::bad_alloc&) {
+        flush_one_by_one(s, plan, totals, progress);
+        return;
       }
-    }
-    RunProfile profile;
-    Options options = s.options;
-    options.profile = &profile;  // each polygon's time, for --stats
-    BatchTriangulation<> batch;
-    try {
-      batch = triangulate_batch(PolygonBatch{coordinates, ring_offsets, polygon_offsets}, options);
-    } catch (const std::bad_alloc&) {
-      // The files together did not fit: each alone may, and one that does not is named.
-      std::vector<File> files = std::move(files_);
-      clear();
-      for (File& f : files) {
-        if (files.size() == 1) {
-          fail(f.name + ": out of memory while triangulating it");
-          progress.advance();
-          continue;
-        }
-        add(std::move(f.name), std::move(f.read));
-        flush(s, plan, totals, progress);
-      }
-      return;
     }
     std::size_t p = 0;
     for (File& f : files_) {
@@ -285,9 +283,10 @@ class Group {
       try {
         std::vector<io::TriangulatedPolygon> results;
         for (std::size_t i = 0; i < f.read.read.features.size(); ++i, ++p) {
-          results.push_back(report_one(s, f.read.read.features[i],
-                                       take(batch, profile, p, ring_offsets, polygon_offsets),
-                                       f.name, i, totals, progress));
+          io::Feature& feature = f.read.read.features[i];
+          PolygonResult result =
+              together ? together->take(p) : triangulate_alone(feature.polygon, s.options);
+          results.push_back(report_one(s, feature, std::move(result), f.name, i, totals, progress));
           ++totals.polygons;
         }
         if (plan.format)
@@ -295,9 +294,10 @@ class Group {
                                                       f.read.source.get(), f.read.layer))
             progress.message(note);
       } catch (const std::bad_alloc&) {
-        fail(f.name + ": out of memory while reporting or writing it");
+        fail(f.name + ": out of memory while triangulating, reporting or writing it", totals,
+             progress);
       } catch (const std::exception& e) {  // an unwritable output, named with the reason
-        fail(e.what());
+        fail(e.what(), totals, progress);
       }
       std::fflush(stdout);
       progress.advance();
@@ -311,29 +311,92 @@ class Group {
     gis::Read read;
   };
 
+  /// The group's polygons as one batch, with the offsets that locate each polygon in it.
+  struct Batch {
+    BatchTriangulation<> triangles;
+    RunProfile profile;  // one phase: each polygon's time
+    std::vector<std::int64_t> ring_offsets{0}, polygon_offsets{0};
+
+    /// Polygon p's result, its indices made local to the polygon again.
+    PolygonResult take(std::size_t p) const {
+      PolygonResult r;
+      const auto base = static_cast<std::uint32_t>(ring_offsets[polygon_offsets[p]]);
+      for (auto t = triangles.triangle_offsets[p]; t < triangles.triangle_offsets[p + 1]; ++t) {
+        const auto& triangle = triangles.triangles[t];
+        r.triangles.push_back({triangle[0] - base, triangle[1] - base, triangle[2] - base});
+      }
+      r.status = triangles.status[p];
+      r.diagnostics.assign(triangles.diagnostics.begin() + triangles.diagnostic_offsets[p],
+                           triangles.diagnostics.begin() + triangles.diagnostic_offsets[p + 1]);
+      r.ms = 1000 * profile.phases.front().task_seconds[p];
+      return r;
+    }
+  };
+
+  Batch triangulate_together(const Options& options) const {
+    Batch b;
+    std::vector<double> coordinates;
+    coordinates.reserve(2 * vertices_);
+    for (const File& f : files_) {
+      for (const io::Feature& feature : f.read.read.features) {
+        for (const Ring& ring : feature.polygon) {
+          for (const Point& p : ring) coordinates.insert(coordinates.end(), {p.x, p.y});
+          b.ring_offsets.push_back(static_cast<std::int64_t>(coordinates.size() / 2));
+        }
+        b.polygon_offsets.push_back(static_cast<std::int64_t>(b.ring_offsets.size() - 1));
+      }
+    }
+    Options with_times = options;
+    with_times.profile = &b.profile;  // each polygon's time, for --stats
+    b.triangles =
+        triangulate_batch(PolygonBatch{coordinates, b.ring_offsets, b.polygon_offsets}, with_times);
+    return b;
+  }
+
+  /// One polygon in a run of its own, profiled: --profile's figures are that run's.
+  PolygonResult triangulate_alone(const Polygon& polygon, const Options& options) {
+    PolygonResult r;
+    r.profile.emplace();
+    Options profiled = options;
+    profiled.profile = &*r.profile;
+    const auto start = std::chrono::steady_clock::now();
+    Triangulation<> t = triangulator_.triangulate(polygon, profiled);
+    r.ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    r.triangles = std::move(t.triangles);
+    r.status = t.status;
+    r.diagnostics = std::move(t.diagnostics);
+    return r;
+  }
+
+  /// The files together did not fit: each alone may, and one that does not is named.
+  void flush_one_by_one(const Settings& s, const OutputPlan& plan, Totals& totals,
+                        Progress& progress) {
+    std::vector<File> files = std::move(files_);
+    clear();
+    for (File& f : files) {
+      if (files.size() == 1) {
+        fail(f.name + ": out of memory while triangulating it", totals, progress);
+        progress.advance();
+        continue;
+      }
+      add(std::move(f.name), std::move(f.read));
+      flush(s, plan, totals, progress);
+    }
+  }
+
+  static void fail(const std::string& message, Totals& totals, Progress& progress) {
+    progress.message(message);
+    totals.bad_input = true;
+    ++totals.failures;
+  }
+
   void clear() {
     files_.clear();
     vertices_ = 0;
   }
 
-  /// Polygon p's result out of the batch, its indices made local to the polygon again.
-  static PolygonResult take(const BatchTriangulation<>& batch, const RunProfile& profile,
-                            std::size_t p, std::span<const std::int64_t> ring_offsets,
-                            std::span<const std::int64_t> polygon_offsets) {
-    PolygonResult r;
-    const auto base = static_cast<std::uint32_t>(ring_offsets[polygon_offsets[p]]);
-    for (auto t = batch.triangle_offsets[p]; t < batch.triangle_offsets[p + 1]; ++t) {
-      const auto& triangle = batch.triangles[t];
-      r.triangles.push_back({triangle[0] - base, triangle[1] - base, triangle[2] - base});
-    }
-    r.status = batch.status[p];
-    r.diagnostics = std::span(batch.diagnostics)
-                        .subspan(batch.diagnostic_offsets[p],
-                                 batch.diagnostic_offsets[p + 1] - batch.diagnostic_offsets[p]);
-    r.ms = 1000 * profile.phases.front().task_seconds[p];
-    return r;
-  }
-
+  Triangulator triangulator_;  // --profile's runs, one polygon at a time
   std::vector<File> files_;
   std::size_t vertices_ = 0;
 };
