@@ -6,10 +6,17 @@
 # writes docs/benchmarks.md.
 #
 #   bench/run.sh [quick|full] [--build DIR] [--commit REV] [--build-only|--report-only]
+#   bench/run.sh scaling [--eurasia] [--build DIR] [--commit REV]
 #
 # quick: a few minutes; a subset of sizes and variants, one repetition, still the largest
 #        coastline (Eurasia, 1.5M vertices) for the headline ratios.
 # full:  every family at 1k..4M, every real input, threads 1, 2, 4, 8, three repetitions (hours).
+# scaling: only the work/span profile of every variant at 2, 4, 8 and 16 partitions, on one
+#        thread, rendered as docs/scaling.md (the one scaling table the docs quote): the coasts
+#        (Eurasia, 1.5M vertices, only with --eurasia: about 2 minutes more; Antarctica is not
+#        simple), the synthetic files (Koch-8, star, comb, spiral, holes grid) and the random
+#        families at 100k; the fastest of 5 runs each (PEAR_BENCH_PROFILE_RUNS). About 15
+#        minutes on 2 cores, 25 with Eurasia.
 # --commit REV: measure that commit, exported with `git archive` into DIR/snapshot (a shared
 #        working tree with other people's unfinished edits need not compile); default: the
 #        working tree as it is.
@@ -23,15 +30,18 @@ build=build-bench
 commit=""
 report_only=0
 build_only=0
+eurasia=0
 while [[ $# -gt 0 ]]; do
   case $1 in
-    quick | full) mode=$1 ;;
+    quick | full | scaling) mode=$1 ;;
+    --eurasia) eurasia=1 ;;
     --build) build=$2; shift ;;
     --commit) commit=$2; shift ;;
     --report-only) report_only=1 ;;
     --build-only) build_only=1 ;;
     *)
-      echo "usage: $0 [quick|full] [--build DIR] [--commit REV] [--build-only|--report-only]" >&2
+      echo "usage: $0 [quick|full|scaling] [--eurasia] [--build DIR] [--commit REV]" \
+        "[--build-only|--report-only]" >&2
       exit 2
       ;;
   esac
@@ -67,6 +77,28 @@ described_commit=$(git -C "$root" rev-parse --short "${commit:-HEAD}")
 [[ -z $commit && -n $(git -C "$root" status --porcelain -- src include) ]] &&
   described_commit="$described_commit+uncommitted"
 
+if [[ $mode = scaling ]]; then
+  [[ -f $build/build.ninja ]] ||
+    meson setup "$build" "$source_dir" --buildtype=release -Dbench=enabled -Dtests=disabled \
+      -Dcli=disabled -Dfuzz=disabled
+  ninja -C "$build" -j2 bench/paper/paper_experiments
+  [[ $build_only -eq 1 ]] && exit 0
+  coasts=south_america,greenland,australia,baffin_island,new_guinea,borneo
+  [[ $eurasia -eq 1 ]] && coasts="eurasia,$coasts"
+  "$python" "$root/bench/report/machine.py" "$mode" "$described_commit" > "$stem-machine.json"
+  # PEAR_BENCH_PATHS=':' names no other real file: the countries are below 10k vertices.
+  PEAR_BENCH_COASTS=$coasts PEAR_BENCH_FAMILIES=random,random-holes PEAR_BENCH_SIZES=100000 \
+    PEAR_BENCH_PATHS=: PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-5} \
+    "$build/bench/paper/paper_experiments" profile > "$stem-profile.json.new"
+  mv "$stem-profile.json.new" "$stem-profile.json"
+  "$python" "$root/bench/report/machine.py" --finish "$stem-machine.json"
+  command="bash bench/run.sh scaling"
+  [[ $eurasia -eq 1 ]] && command="$command --eurasia"
+  "$python" "$root/bench/report/scaling.py" "$stem" --docs "$root/docs" --command "$command"
+  echo "wrote $stem-profile.json and $root/docs/scaling.md"
+  exit 0
+fi
+
 if [[ $report_only -eq 0 ]]; then
   [[ -f $build/build.ninja ]] ||
     meson setup "$build" "$source_dir" --buildtype=release -Dbench=enabled -Dtests=disabled \
@@ -85,7 +117,7 @@ if [[ $report_only -eq 0 ]]; then
     bench_flags=(--benchmark_repetitions=1 --benchmark_min_time=0.05)
     quality_max=20000
     profile_max=250000
-    export PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-2}
+    export PEAR_BENCH_PROFILE_RUNS=${PEAR_BENCH_PROFILE_RUNS:-5}
   else
     export PEAR_BENCH_MAX_SECONDS=${PEAR_BENCH_MAX_SECONDS:-30}
     filter="triangulate/.*"

@@ -112,10 +112,14 @@ struct Variant {
   pear::Algorithm algorithm;
   bool delaunay;
 };
+/// Every variant at k partitions: the sequential clipper too (its simplicity check and the
+/// CDT's flips are cut into k parts), and the CDT after the sequential and the parallel clip.
 constexpr Variant parallel_variants[] = {
-    {"pc", pear::Algorithm::partition_and_cut, false},
+    {"seq", pear::Algorithm::sequential, false},
     {"mc", pear::Algorithm::mark_and_cut, false},
+    {"pc", pear::Algorithm::partition_and_cut, false},
     {"dc", pear::Algorithm::divide_and_conquer, false},
+    {"seq_cdt", pear::Algorithm::sequential, true},
     {"pc_cdt", pear::Algorithm::partition_and_cut, true},
 };
 
@@ -130,10 +134,10 @@ void write_profile(Json& out, const pear::RunProfile& profile, double wall) {
   out.end_object();
   out.key("phases").begin_array();
   for (const auto& phase : profile.phases) {
-    double sum = 0;
-    for (const double s : phase.task_seconds) sum += s;
+    double sum = 0, longest = 0;
+    for (const double s : phase.task_seconds) sum += s, longest = std::max(longest, s);
     out.begin_object().field("name", phase.name).field("tasks", phase.task_seconds.size());
-    out.field("work", sum).end_object();
+    out.field("work", sum).field("longest", longest).end_object();
   }
   out.end_array();
 }
