@@ -87,9 +87,9 @@ void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
                    TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats) {
   stats = {};
   Mesh mesh;
-  bool built = false;
-  ctx.run_serial("cdt adjacency", [&] { built = build_mesh(points, polygon, triangles, mesh); });
-  if (!built) return;  // not a triangulation: flipping could only make it worse
+  // Its phases are recorded as "cdt adjacency: ...".
+  if (!build_mesh(points, polygon, triangles, mesh, ctx))
+    return;  // not a triangulation: flipping could only make it worse
   stats.edges = mesh.interior_edges;
   const std::size_t budget = flip_budget(points.size());
   const std::size_t sets =

@@ -1,41 +1,130 @@
 #include "mesh.hpp"
 
 #include <algorithm>
+#include <memory>
+#include <utility>
 
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
 namespace {
 
-/// The edges to match: every half-edge, then every ring edge, as (low, high) caller indices.
+/// The edges to match, as (low, high) caller indices: every half-edge e < half_edges (3t + k),
+/// then every ring edge (half_edges + its first clean vertex).
 struct EdgeKeys {
-  std::vector<std::uint32_t> low, high;
+  // Not vectors: every entry is written by the parallel tasks, so a serial zero fill would
+  // only add to the span (25 ms on Eurasia's 6M edges).
+  std::unique_ptr<std::uint32_t[]> low, high;
   std::size_t half_edges = 0;
 };
 
-EdgeKeys collect_edges(const CleanPolygon& polygon, const TriangleList& triangles) {
-  EdgeKeys keys;
-  keys.half_edges = 3 * triangles.size();
-  const std::size_t count = keys.half_edges + polygon.points.size();
-  keys.low.resize(count);
-  keys.high.resize(count);
+/// Edges are cut into `parts` chunks (each a range of triangles and one of ring vertices) and
+/// put into `parts` buckets by their low vertex (a range of vertices each), so that equal edges
+/// meet in one bucket and the buckets are matched in parallel.
+struct EdgeBuckets {
+  std::size_t parts = 1;
+  std::size_t width = 1;            ///< vertices per bucket: bucket(v) = v / width
+  std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
+  std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
+  std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
+  std::vector<std::uint8_t> bad_end;       ///< per chunk: an edge ends past the points
+};
+
+/// Chunk c of [0, count) cut into `parts`.
+std::pair<std::size_t, std::size_t> chunk_of(std::size_t count, std::size_t parts, std::size_t c) {
+  return {c * count / parts, (c + 1) * count / parts};
+}
+
+/// Calls visit(e) for every edge of chunk c: its triangles' half-edges, then its ring edges.
+template <class Visit>
+void for_chunk_edges(const EdgeKeys& keys, std::size_t ring_edges, std::size_t parts, std::size_t c,
+                     Visit&& visit) {
+  const auto [t0, t1] = chunk_of(keys.half_edges / 3, parts, c);
+  for (std::size_t e = 3 * t0; e < 3 * t1; ++e) visit(e);
+  const auto [v0, v1] = chunk_of(ring_edges, parts, c);
+  for (std::size_t v = v0; v < v1; ++v) visit(keys.half_edges + v);
+}
+
+/// Writes chunk c's keys and counts its edges per bucket.
+void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, std::size_t vertices,
+                   EdgeKeys& keys, EdgeBuckets& buckets, std::size_t c) {
   const auto put = [&](std::size_t e, std::uint32_t u, std::uint32_t v) {
     keys.low[e] = std::min(u, v);
     keys.high[e] = std::max(u, v);
   };
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  const auto [t0, t1] = chunk_of(triangles.size(), buckets.parts, c);
+  for (std::size_t t = t0; t < t1; ++t)
     for (std::size_t k = 0; k < 3; ++k) put(3 * t + k, triangles[t][k], triangles[t][(k + 1) % 3]);
-  std::size_t e = keys.half_edges;
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
-    for (std::uint32_t i = first; i < end; ++i)
-      put(e++, polygon.original[i], polygon.original[i + 1 < end ? i + 1 : first]);
+  const auto [v0, v1] = chunk_of(polygon.points.size(), buckets.parts, c);
+  // The ring of v0, then walked along: ring r is [ring_starts[r], ring_starts[r + 1]).
+  std::size_t r = static_cast<std::size_t>(
+      std::upper_bound(polygon.ring_starts.begin(), polygon.ring_starts.end(), v0) -
+      polygon.ring_starts.begin() - 1);
+  for (std::size_t v = v0; v < v1; ++v) {
+    while (v >= polygon.ring_starts[r + 1]) ++r;
+    const std::uint32_t next = v + 1 < polygon.ring_starts[r + 1] ? v + 1 : polygon.ring_starts[r];
+    put(keys.half_edges + v, polygon.original[v], polygon.original[next]);
   }
-  return keys;
+  std::size_t* count = &buckets.counts[c * buckets.parts];
+  for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
+    if (keys.high[e] >= vertices) return void(buckets.bad_end[c] = 1);
+    ++count[keys.low[e] / buckets.width];
+  });
+}
+
+/// Where each chunk writes in each bucket: buckets one after another, chunks in order inside.
+void place_chunks(EdgeBuckets& buckets) {
+  const std::size_t parts = buckets.parts;
+  buckets.begin.assign(parts + 1, 0);
+  std::size_t at = 0;
+  for (std::size_t b = 0; b < parts; ++b) {
+    buckets.begin[b] = at;
+    for (std::size_t c = 0; c < parts; ++c) at += std::exchange(buckets.counts[c * parts + b], at);
+  }
+  buckets.begin[parts] = at;
+  buckets.edges = std::make_unique_for_overwrite<std::uint32_t[]>(at);
+}
+
+/// Makes h and g twins, counted in `pairs` (a bucket's own count: buckets run in parallel).
+bool pair(Mesh& mesh, std::uint32_t h, std::uint32_t g, std::size_t& pairs) {
+  // The same direction: the two triangles overlap.
+  if (mesh.points[mesh.origin(h)] == mesh.points[mesh.origin(g)]) return false;
+  mesh.twin[h] = g;
+  mesh.twin[g] = h;
+  ++pairs;
+  return true;
+}
+
+/// What matching found: its twins are written into the mesh.
+struct BucketMatch {
+  std::size_t pairs = 0;
+  std::vector<std::uint32_t> loose;  ///< matched to nothing by index: see pair_by_position
+  bool triangulation = true;         ///< false: an edge with more than two triangles
+};
+
+/// Pairs equal edges of `order` (sorted by low, then high). A ring edge makes its triangle's
+/// edge a constraint.
+BucketMatch match_sorted(Mesh& mesh, const EdgeKeys& keys, std::span<const std::uint32_t> order) {
+  BucketMatch m;
+  for (std::size_t i = 0; i < order.size();) {
+    std::size_t j = i, rings = 0;
+    for (; j < order.size() && keys.low[order[j]] == keys.low[order[i]] &&
+           keys.high[order[j]] == keys.high[order[i]];
+         ++j)
+      rings += order[j] >= keys.half_edges ? 1 : 0;
+    const std::size_t uses = j - i - rings;
+    if (uses > 2 || (uses == 2 && rings == 0 && !pair(mesh, order[i], order[i + 1], m.pairs))) {
+      m.triangulation = false;
+      return m;
+    }
+    if (uses + rings == 1) m.loose.push_back(order[i]);
+    i = j;
+  }
+  return m;
 }
 
 /// Stable counting sort of `in` by key[e] < range into `out`.
-void counting_sort(const std::vector<std::uint32_t>& in, const std::vector<std::uint32_t>& key,
+void counting_sort(const std::vector<std::uint32_t>& in, const std::uint32_t* key,
                    std::size_t range, std::vector<std::uint32_t>& out) {
   std::vector<std::uint32_t> start(range + 1, 0);
   for (std::uint32_t e : in) ++start[key[e] + 1];
@@ -44,13 +133,39 @@ void counting_sort(const std::vector<std::uint32_t>& in, const std::vector<std::
   for (std::uint32_t e : in) out[start[key[e]]++] = e;
 }
 
-bool pair(Mesh& mesh, std::uint32_t h, std::uint32_t g) {
-  // The same direction: the two triangles overlap.
-  if (mesh.points[mesh.origin(h)] == mesh.points[mesh.origin(g)]) return false;
-  mesh.twin[h] = g;
-  mesh.twin[g] = h;
-  ++mesh.interior_edges;
-  return true;
+/// One part: two stable counting sorts of all edges (by high, then by low) put equal edges next
+/// to each other, in less work than the buckets' sorts, which pay off only in parallel.
+BucketMatch match_all(Mesh& mesh, const EdgeKeys& keys, std::size_t edges, std::size_t vertices) {
+  std::vector<std::uint32_t> order(edges), by_high;
+  for (std::size_t e = 0; e < edges; ++e) order[e] = static_cast<std::uint32_t>(e);
+  counting_sort(order, keys.high.get(), vertices, by_high);
+  counting_sort(by_high, keys.low.get(), vertices, order);
+  return match_sorted(mesh, keys, order);
+}
+
+/// One bucket of many: its edges counted by low over the bucket's vertices, each low's few
+/// edges sorted by high by insertion, as high << 32 | edge (integers compared, no key looked
+/// up), then matched. The order does not depend on the chunks.
+BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, std::span<const std::uint32_t> edges,
+                         std::uint32_t first_vertex, std::size_t width) {
+  std::vector<std::uint32_t> start(width + 1, 0);
+  std::vector<std::uint64_t> sorted(edges.size());
+  for (const std::uint32_t e : edges) ++start[keys.low[e] - first_vertex + 1];
+  for (std::size_t v = 0; v < width; ++v) start[v + 1] += start[v];
+  for (const std::uint32_t e : edges)
+    sorted[start[keys.low[e] - first_vertex]++] = std::uint64_t{keys.high[e]} << 32 | e;
+  for (std::size_t v = 0, from = 0; v < width; from = start[v++]) {
+    const auto first = sorted.begin() + from, last = sorted.begin() + start[v];
+    if (last - first > 16) {
+      std::sort(first, last);  // a vertex of high degree (a fan)
+      continue;
+    }
+    for (auto it = first; it != last; ++it)
+      for (auto at = it; at != first && *(at - 1) > *at; --at) std::iter_swap(at - 1, at);
+  }
+  std::vector<std::uint32_t> order(sorted.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) order[i] = static_cast<std::uint32_t>(sorted[i]);
+  return match_sorted(mesh, keys, order);
 }
 
 /// Where rings touch, two caller indices share a point, and the triangles on the two sides of a
@@ -70,7 +185,8 @@ bool pair_by_position(Mesh& mesh, const EdgeKeys& keys, std::vector<std::uint32_
     for (j = i; j < loose.size() && ends(loose[j]) == ends(loose[i]); ++j)
       rings += loose[j] >= keys.half_edges ? 1 : 0;
     if (j - i - rings > 2) return false;
-    if (j - i == 2 && rings == 0 && !pair(mesh, loose[i], loose[i + 1])) return false;
+    if (j - i == 2 && rings == 0 && !pair(mesh, loose[i], loose[i + 1], mesh.interior_edges))
+      return false;
   }
   return true;
 }
@@ -82,36 +198,58 @@ EdgeEnds::EdgeEnds(const Point& p, const Point& q) : low(p), high(q) {
 }
 
 bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, TriangleList& triangles,
-                Mesh& mesh) {
-  mesh.points = points;
-  mesh.triangles = &triangles;
-  mesh.interior_edges = 0;
-  mesh.twin.assign(3 * triangles.size(), no_twin);
-  const EdgeKeys keys = collect_edges(polygon, triangles);
-  for (std::uint32_t v : keys.high)
-    if (v >= points.size()) return false;
-  // Two counting sorts (by high, then stably by low) put equal edges next to each other.
-  std::vector<std::uint32_t> order(keys.low.size()), by_high;
-  for (std::size_t e = 0; e < order.size(); ++e) order[e] = static_cast<std::uint32_t>(e);
-  counting_sort(order, keys.high, points.size(), by_high);
-  counting_sort(by_high, keys.low, points.size(), order);
-  std::vector<std::uint32_t> loose;  // matched to nothing by index: see pair_by_position
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i, rings = 0;
-    for (; j < order.size() && keys.low[order[j]] == keys.low[order[i]] &&
-           keys.high[order[j]] == keys.high[order[i]];
-         ++j)
-      rings += order[j] >= keys.half_edges ? 1 : 0;
-    const std::size_t uses = j - i - rings;
-    if (uses > 2) return false;
-    if (uses == 2 && rings == 0) {
-      if (!pair(mesh, order[i], order[i + 1])) return false;
-    } else if (uses + rings == 1) {
-      loose.push_back(order[i]);
-    }
-    i = j;
+                Mesh& mesh, const RunContext& ctx) {
+  const std::size_t edges = 3 * triangles.size() + polygon.points.size();
+  EdgeKeys keys;
+  EdgeBuckets buckets;
+  buckets.parts = std::clamp<std::size_t>(edges / mesh_edges_per_task, 1, ctx.partitions);
+  buckets.width = std::max<std::size_t>(1, (points.size() + buckets.parts - 1) / buckets.parts);
+  ctx.run_serial("cdt adjacency: allocate", [&] {
+    mesh.points = points;
+    mesh.triangles = &triangles;
+    mesh.interior_edges = 0;
+    mesh.twin.assign(3 * triangles.size(), no_twin);
+    keys.half_edges = 3 * triangles.size();
+    keys.low = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
+    keys.high = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
+    buckets.counts.assign(buckets.parts * buckets.parts, 0);
+    buckets.bad_end.assign(buckets.parts, 0);
+  });
+  ctx.run_tasks("cdt adjacency: edges", buckets.parts, [&](std::size_t c) {
+    collect_chunk(polygon, triangles, points.size(), keys, buckets, c);
+  });
+  if (std::find(buckets.bad_end.begin(), buckets.bad_end.end(), 1) != buckets.bad_end.end())
+    return false;
+  std::vector<BucketMatch> matches(buckets.parts);
+  if (buckets.parts == 1) {
+    ctx.run_serial("cdt adjacency: match",
+                   [&] { matches[0] = match_all(mesh, keys, edges, points.size()); });
+  } else {
+    ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets); });
+    ctx.run_tasks("cdt adjacency: scatter", buckets.parts, [&](std::size_t c) {
+      std::size_t* at = &buckets.counts[c * buckets.parts];
+      for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
+        buckets.edges[at[keys.low[e] / buckets.width]++] = static_cast<std::uint32_t>(e);
+      });
+    });
+    ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
+      const std::span<const std::uint32_t> bucket(buckets.edges.get() + buckets.begin[b],
+                                                  buckets.begin[b + 1] - buckets.begin[b]);
+      const auto first_vertex = static_cast<std::uint32_t>(b * buckets.width);
+      matches[b] = match_bucket(mesh, keys, bucket, first_vertex, buckets.width);
+    });
   }
-  return pair_by_position(mesh, keys, loose);
+  bool built = true;
+  ctx.run_serial("cdt adjacency: by position", [&] {
+    std::vector<std::uint32_t> loose;
+    for (const BucketMatch& m : matches) {
+      built = built && m.triangulation;
+      mesh.interior_edges += m.pairs;
+      loose.insert(loose.end(), m.loose.begin(), m.loose.end());
+    }
+    built = built && pair_by_position(mesh, keys, loose);
+  });
+  return built;
 }
 
 bool must_flip(const Mesh& mesh, std::uint32_t h) {

@@ -44,13 +44,18 @@ inline std::uint32_t next_half_edge(std::uint32_t h) {
   return h % 3 == 2 ? h - 2 : h + 1;
 }
 
-/// Fills mesh.twin for `triangles` in linear time: half-edges and the polygon's ring edges are
-/// counting-sorted by their endpoints (caller indices). An edge of a ring is a constraint; so is
-/// an edge with one triangle. Bridges and other diagonals have two triangles and may be flipped,
-/// so the result is the CDT of the polygon, not of its bridged boundary. Returns false when an
-/// edge has more than two triangles: not a triangulation, nothing may be flipped.
+/// The fewest edges (half-edges and ring edges) worth a task of their own in build_mesh.
+inline constexpr std::size_t mesh_edges_per_task = 4096;
+
+/// Fills mesh.twin for `triangles`: half-edges and the polygon's ring edges are matched by their
+/// endpoints (caller indices), sorted in buckets by the lower one, in up to ctx.partitions tasks
+/// per phase (close to linear work; the twins do not depend on the partitions). An edge of a
+/// ring is a constraint; so is an edge with one triangle. Bridges and other diagonals have two
+/// triangles and may be flipped, so the result is the CDT of the polygon, not of its bridged
+/// boundary. Returns false when an edge has more than two triangles, or a corner is not one of
+/// `points`: not a triangulation, nothing may be flipped.
 bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, TriangleList& triangles,
-                Mesh& mesh);
+                Mesh& mesh, const RunContext& ctx);
 
 /// Whether the edge h must be flipped: its two triangles and their apexes form a strictly convex
 /// quadrilateral (the flip gives two counterclockwise triangles) and the apex across h lies

@@ -1,0 +1,105 @@
+// The CDT's adjacency build (src/cdt/mesh.cpp) in parallel: at 1, 2, 3, 8 and 16 threads and
+// partitions it must give the same twins, and twins that are right by counting: every half-edge
+// of a triangulation of n ring edges is a ring edge (no twin) or one of (3t - n) / 2 pairs, each
+// pair the same two vertices in opposite directions.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "cdt/mesh.hpp"
+#include "clean/clean.hpp"
+#include "pear/generate.hpp"
+#include "pipeline/threading.hpp"
+
+namespace pear::detail {
+namespace {
+
+struct Triangulated {
+  Polygon polygon;
+  std::vector<Point> points;  ///< the caller's points, ring after ring
+  CleanPolygon clean;
+  TriangleList triangles;
+};
+
+Triangulated triangulated(Polygon polygon) {
+  Triangulated t{std::move(polygon), {}, {}, {}};
+  for (const Ring& ring : t.polygon) t.points.insert(t.points.end(), ring.begin(), ring.end());
+  std::vector<std::uint32_t> offsets{0};
+  for (const Ring& ring : t.polygon) offsets.push_back(offsets.back() + ring.size());
+  std::vector<Diagnostic> diagnostics;
+  EXPECT_EQ(clean_polygon(InputPolygon(PolygonView{t.points, offsets}), t.clean, diagnostics),
+            Status::ok);
+  const auto result = triangulate(t.polygon, Options{.algorithm = Algorithm::sequential});
+  EXPECT_EQ(result.status, Status::ok);
+  t.triangles = result.triangles;
+  return t;
+}
+
+/// Twins by counting and by direction, independent of how they were matched.
+void expect_twins_right(const Mesh& mesh, std::size_t ring_edges) {
+  std::size_t unpaired = 0;
+  for (std::uint32_t h = 0; h < mesh.twin.size(); ++h) {
+    const std::uint32_t g = mesh.twin[h];
+    if (g == no_twin) {
+      ++unpaired;
+      continue;
+    }
+    ASSERT_EQ(mesh.twin[g], h);
+    ASSERT_EQ(mesh.origin(h), mesh.destination(g));
+    ASSERT_EQ(mesh.destination(h), mesh.origin(g));
+  }
+  EXPECT_EQ(unpaired, ring_edges);
+  EXPECT_EQ(2 * mesh.interior_edges, mesh.twin.size() - ring_edges);
+}
+
+class MeshBuild : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
+  // 30,000 vertices: about 120,000 edges, enough for 16 tasks of mesh_edges_per_task.
+  Triangulated t = triangulated(generate_polygon(GetParam(), 30'000, 11));
+  ASSERT_GE(3 * t.triangles.size() + t.clean.points.size(), 16 * mesh_edges_per_task);
+  Mesh reference;
+  ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, reference, RunContext{}));
+  expect_twins_right(reference, t.clean.points.size());
+  for (unsigned threads : {1u, 2u, 3u, 8u, 16u}) {
+    Workers workers;
+    for (std::uint32_t partitions : {1u, 2u, 3u, 8u, 16u}) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + " partitions " +
+                   std::to_string(partitions));
+      RunProfile profile;
+      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                           .partitions = partitions,
+                           .profile = &profile};
+      Mesh mesh;
+      ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, ctx));
+      EXPECT_EQ(mesh.twin, reference.twin);
+      EXPECT_EQ(mesh.interior_edges, reference.interior_edges);
+      // The matching phase really is cut into the partitions' tasks.
+      const auto match =
+          std::find_if(profile.phases.begin(), profile.phases.end(),
+                       [](const auto& p) { return p.name == "cdt adjacency: match"; });
+      ASSERT_NE(match, profile.phases.end());
+      EXPECT_EQ(match->task_seconds.size(), partitions);
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Families, MeshBuild, ::testing::Values("random", "random-holes", "star"));
+
+TEST(MeshBuildErrors, AnEdgeWithThreeTrianglesIsNoTriangulation) {
+  Triangulated t = triangulated({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}});
+  t.triangles.push_back(t.triangles.front());  // the same triangle twice: its edges thrice
+  Mesh mesh;
+  EXPECT_FALSE(build_mesh(t.points, t.clean, t.triangles, mesh, RunContext{}));
+}
+
+TEST(MeshBuildErrors, ACornerPastThePointsIsNoTriangulation) {
+  Triangulated t = triangulated({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}});
+  t.triangles.front()[1] = 4;
+  Mesh mesh;
+  EXPECT_FALSE(build_mesh(t.points, t.clean, t.triangles, mesh, RunContext{}));
+}
+
+}  // namespace
+}  // namespace pear::detail
