@@ -142,6 +142,30 @@ void write_profile(Json& out, const pear::RunProfile& profile, double wall) {
   out.end_array();
 }
 
+/// One configuration of the profile and its least disturbed run so far.
+struct Profiled {
+  const char* variant;  ///< "sequential", "sequential_cdt" (the bases) or a Variant's name
+  unsigned partitions;
+  pear::Options options;
+  double wall = 1e300;
+  pear::RunProfile profile;
+};
+
+/// The bases at one partition, then every variant at 2, 4, 8 and 16.
+std::vector<Profiled> profile_configs() {
+  using pear::Algorithm;
+  std::vector<Profiled> all = {
+      {"sequential", 1, {.algorithm = Algorithm::sequential}},
+      {"sequential_cdt", 1, {.algorithm = Algorithm::sequential, .delaunay = true}}};
+  for (const Variant& variant : parallel_variants)
+    for (const unsigned k : {2u, 4u, 8u, 16u})
+      all.push_back(
+          {variant.name,
+           k,
+           {.algorithm = variant.algorithm, .delaunay = variant.delaunay, .partitions = k}});
+  return all;
+}
+
 void profile_input(Json& out, const Input& input) {
   const pear::Polygon polygon = input.load();
   const char* runs_text = std::getenv("PEAR_BENCH_PROFILE_RUNS");
@@ -150,23 +174,24 @@ void profile_input(Json& out, const Input& input) {
                                                 : 3;
   std::size_t vertices = 0;
   for (const auto& ring : polygon) vertices += ring.size();
-  out.begin_object().field("input", input.name).field("vertices", vertices);
-  out.field("sequential",
-            best_run(polygon, {.algorithm = pear::Algorithm::sequential}, runs, nullptr));
-  out.field("sequential_cdt",
-            best_run(polygon, {.algorithm = pear::Algorithm::sequential, .delaunay = true}, runs,
-                     nullptr));
-  out.key("variants").begin_array();
-  for (const Variant& variant : parallel_variants)
-    for (const unsigned k : {2u, 4u, 8u, 16u}) {
+  // Round after round over all configurations: on a shared machine a busy minute then spoils
+  // one run of each, not every run of one.
+  std::vector<Profiled> configs = profile_configs();
+  for (int r = 0; r < runs; ++r)
+    for (Profiled& c : configs) {
       pear::RunProfile profile;
-      const pear::Options options{
-          .algorithm = variant.algorithm, .delaunay = variant.delaunay, .partitions = k};
-      const double wall = best_run(polygon, options, runs, &profile);
-      out.begin_object().field("variant", variant.name).field("partitions", k);
-      write_profile(out, profile, wall);
-      out.end_object();
+      const double wall = best_run(polygon, c.options, 1, &profile);
+      if (wall < c.wall) c.wall = wall, c.profile = std::move(profile);
     }
+  out.begin_object().field("input", input.name).field("vertices", vertices);
+  out.field("sequential", configs[0].wall).field("sequential_cdt", configs[1].wall);
+  out.key("variants").begin_array();
+  for (std::size_t i = 2; i < configs.size(); ++i) {
+    out.begin_object().field("variant", configs[i].variant);
+    out.field("partitions", configs[i].partitions);
+    write_profile(out, configs[i].profile, configs[i].wall);
+    out.end_object();
+  }
   out.end_array().end_object();
 }
 

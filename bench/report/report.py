@@ -119,11 +119,11 @@ def document(run, figs, stem):
         "\n### Where pear wins and loses\n", wins_and_losses(t), "\n", hand_written("reading.md"),
         "\n## Speedup of the parallel variants (Fig. 9)\n",
         "Measured: pear's sequential engine (top) time / the variant's time, same run (CDT: "
-        "sequential CDT / parallel CDT). Projected: from instrumented runs on one thread with k "
-        "partitions (`Options::profile`), work and span relative to the sequential engine's time "
-        "and the bound max(work/k, longest task) summed over phases (Brent), with the time outside "
-        "the recorded phases counted as serial.\n",
-        tables.speedups(t, run["profile"]),
+        "sequential CDT / parallel CDT). The figure's projection: this run's instrumented runs on "
+        "one thread with k partitions (`Options::profile`), the bound max(work/k, longest task) "
+        "summed over phases (Brent). Work, span and that bound for every variant, input and k: "
+        "[scaling.md](scaling.md), the one scaling table (`bash bench/run.sh scaling`).\n",
+        tables.speedups(t),
         f"\n![Fig. 9]({figs['fig9']})\n" if figs.get("fig9") else "",
         "\n## Quality (Table 1)\n",
         f"Mean over the {common} inputs (of {total}: the corpus up to the mode's size limit and "

@@ -93,7 +93,8 @@ def all_times(t):
     return table(head, rows)
 
 
-def speedups(t, profile):
+def speedups(t):
+    """Measured speedups only: the work/span projection is docs/scaling.md's one table."""
     head = ["input", "vertices"]
     for v in ("pc", "mc", "dc"):
         head += [f"{v} t1", f"{v} t2"]
@@ -109,24 +110,7 @@ def speedups(t, profile):
             row += [fmt_ratio(ratio(base, t.ms(inp, f"pear_{v}_t{k}"))) for k in (1, 2)]
         row.append(fmt_ratio(ratio(base_cdt, t.ms(inp, "pear_pc_t2_cdt"))))
         rows.append(row)
-    out = table(head, rows)
-    if not profile:
-        return out
-    head = ["input", "vertices", "variant"] + [f"k={k}: work / span, bound at {k} threads"
-                                              for k in (2, 4, 8, 16)]
-    rows = []
-    for run in profile:
-        for variant in ("pc", "mc", "dc", "pc_cdt"):
-            base = run["sequential_cdt"] if variant == "pc_cdt" else run["sequential"]
-            cells = []
-            for k in (2, 4, 8, 16):
-                v = next((v for v in run["variants"]
-                          if v["variant"] == variant and v["partitions"] == k), None)
-                cells.append("" if not v else
-                             f"{v['work'] / base:.2f} / {v['span'] / base:.2f}, "
-                             f"{base / v['projected'][str(k)]:.2f}x")
-            rows.append([run["input"], f"{run['vertices']:,}", variant] + cells)
-    return out + "\n" + table(head, rows)
+    return table(head, rows)
 
 
 def quality(records):
