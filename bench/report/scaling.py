@@ -107,9 +107,11 @@ how far each variant could scale; the README and docs/parallel.md quote it.
 
 How it is measured: every run on **one thread** with `Options::partitions = k` (the output
 depends on k, never on the threads), `Options::profile` timing every task of every phase, the
-fastest of a few runs kept (`PEAR_BENCH_PROFILE_RUNS`; on a shared machine a disturbed run
-moves a cell by 10-30%, the ranges below say more than any one cell). *Work* is the sum of all tasks, *span* the sum over phases of the
-longest task (both with the time outside the recorded phases counted as one serial task).
+fastest of a few runs kept (`PEAR_BENCH_PROFILE_RUNS`, the runs of all configurations of an
+input interleaved; on a shared machine a disturbed run still moves a cell by tens of per cent,
+at worst 2x, and the ranges below say more than any one cell). *Work* is the sum of all tasks, *span* the sum over
+phases of the longest task (both with the time outside the recorded phases counted as one
+serial task).
 The **bound** is the sequential default's time at one partition (the third column; for the CDT
 rows, the sequential CDT's) over `RunProfile::projected(k)`, Brent's bound per phase,
 max(work / k, longest task), summed: the speedup k threads would give over one if scheduling were
