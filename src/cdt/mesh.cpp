@@ -27,6 +27,7 @@ struct EdgeBuckets {
   std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
   std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
   std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
+  std::unique_ptr<std::uint8_t[]> bucket;  ///< each edge's, found once (a division is slow)
   std::vector<std::uint8_t> bad_end;       ///< per chunk: an edge ends past the points
 };
 
@@ -66,9 +67,13 @@ void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, s
     put(keys.half_edges + v, polygon.original[v], polygon.original[next]);
   }
   std::size_t* count = &buckets.counts[c * buckets.parts];
+  const auto width = static_cast<std::uint32_t>(buckets.width);
   for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
     if (keys.high[e] >= vertices) return void(buckets.bad_end[c] = 1);
-    ++count[keys.low[e] / buckets.width];
+    if (buckets.parts == 1) return;  // one bucket: match_all sorts the keys themselves
+    const auto b = static_cast<std::uint8_t>(keys.low[e] / width);
+    buckets.bucket[e] = b;
+    ++count[b];
   });
 }
 
@@ -202,7 +207,9 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   const std::size_t edges = 3 * triangles.size() + polygon.points.size();
   EdgeKeys keys;
   EdgeBuckets buckets;
-  buckets.parts = std::clamp<std::size_t>(edges / mesh_edges_per_task, 1, ctx.partitions);
+  // At most 256 parts: an edge's bucket is kept in a byte.
+  const std::size_t most_parts = std::clamp<std::size_t>(ctx.partitions, 1, 256);
+  buckets.parts = std::clamp<std::size_t>(edges / mesh_edges_per_task, 1, most_parts);
   buckets.width = std::max<std::size_t>(1, (points.size() + buckets.parts - 1) / buckets.parts);
   ctx.run_serial("cdt adjacency: allocate", [&] {
     mesh.points = points;
@@ -213,6 +220,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     keys.low = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
     keys.high = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
     buckets.counts.assign(buckets.parts * buckets.parts, 0);
+    if (buckets.parts > 1) buckets.bucket = std::make_unique_for_overwrite<std::uint8_t[]>(edges);
     buckets.bad_end.assign(buckets.parts, 0);
   });
   ctx.run_tasks("cdt adjacency: edges", buckets.parts, [&](std::size_t c) {
@@ -229,7 +237,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     ctx.run_tasks("cdt adjacency: scatter", buckets.parts, [&](std::size_t c) {
       std::size_t* at = &buckets.counts[c * buckets.parts];
       for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
-        buckets.edges[at[keys.low[e] / buckets.width]++] = static_cast<std::uint32_t>(e);
+        buckets.edges[at[buckets.bucket[e]]++] = static_cast<std::uint32_t>(e);
       });
     });
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {

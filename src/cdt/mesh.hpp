@@ -49,11 +49,11 @@ inline constexpr std::size_t mesh_edges_per_task = 4096;
 
 /// Fills mesh.twin for `triangles`: half-edges and the polygon's ring edges are matched by their
 /// endpoints (caller indices), sorted in buckets by the lower one, in up to ctx.partitions tasks
-/// per phase (close to linear work; the twins do not depend on the partitions). An edge of a
-/// ring is a constraint; so is an edge with one triangle. Bridges and other diagonals have two
-/// triangles and may be flipped, so the result is the CDT of the polygon, not of its bridged
-/// boundary. Returns false when an edge has more than two triangles, or a corner is not one of
-/// `points`: not a triangulation, nothing may be flipped.
+/// per phase, at most 256 (close to linear work; the twins do not depend on the partitions). An
+/// edge of a ring is a constraint; so is an edge with one triangle. Bridges and other diagonals
+/// have two triangles and may be flipped, so the result is the CDT of the polygon, not of its
+/// bridged boundary. Returns false when an edge has more than two triangles, or a corner is not one
+/// of `points`: not a triangulation, nothing may be flipped.
 bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, TriangleList& triangles,
                 Mesh& mesh, const RunContext& ctx);
 
