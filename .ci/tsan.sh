@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs) and of the
 # parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads) and the
-# parallel CDT's cases (flips in breadth-first sets, border rounds).
+# parallel CDT's cases (flips in breadth-first sets, border rounds, the bucketed adjacency build).
 # Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
 # The sanitizer build is separate: only the library and the scheduler tests are compiled.
 set -euo pipefail
@@ -23,6 +23,7 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/parallel/parallel_variants_test \
   tests/parallel/divide_conquer_test \
   tests/cdt/cdt_test \
+  tests/cdt/cdt_mesh_test \
   tests/pipeline/batch_test
 
 # halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
@@ -31,4 +32,5 @@ meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 "$build/tests/parallel/parallel_variants_test" --gtest_filter='Tricky.*'
 "$build/tests/parallel/divide_conquer_test" --gtest_filter='DivideAndConquer.*'
 "$build/tests/cdt/cdt_test" --gtest_filter='Cdt.*'
+"$build/tests/cdt/cdt_mesh_test" --gtest_filter='Families/MeshBuild.*/0'
 "$build/tests/pipeline/batch_test" --gtest_filter='Batch.SameAsOneCall*:Batch.OnTheCallersExecutor'
