@@ -1,7 +1,8 @@
 // The CDT's adjacency build (src/cdt/mesh.cpp) in parallel: at 1, 2, 3, 8 and 16 threads and
 // partitions it must give the same twins, and twins that are right by counting: every half-edge
 // of a triangulation of n ring edges is a ring edge (no twin) or one of (3t - n) / 2 pairs, each
-// pair the same two vertices in opposite directions.
+// pair the same two vertices in opposite directions. And the CDT built on it valid and the same
+// at every thread count.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include "clean/clean.hpp"
 #include "pear/generate.hpp"
 #include "pipeline/threading.hpp"
+#include "support.hpp"
 
 namespace pear::detail {
 namespace {
@@ -89,6 +91,19 @@ TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, MeshBuild, ::testing::Values("random", "random-holes", "star"));
+
+// Through the public API: the CDT of a polygon whose mesh is built in 16 buckets is valid
+// (the validator's exact Delaunay check) and the same at 1, 2, 3, 8 and 16 threads.
+TEST(MeshBuildCdt, ValidAndTheSameAtEveryThreadCount) {
+  const Polygon polygon = generate_polygon("random-holes", 30'000, 3);
+  const auto one = testing::constrained_delaunay(polygon, Algorithm::sequential, 1, 16);
+  ASSERT_EQ(one.status, Status::ok);
+  testing::expect_delaunay(polygon, one.triangles);
+  for (unsigned threads : {2u, 3u, 8u, 16u}) {
+    const auto many = testing::constrained_delaunay(polygon, Algorithm::sequential, threads, 16);
+    EXPECT_EQ(many.triangles, one.triangles) << threads << " threads";
+  }
+}
 
 TEST(MeshBuildErrors, AnEdgeWithThreeTrianglesIsNoTriangulation) {
   Triangulated t = triangulated({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}});
