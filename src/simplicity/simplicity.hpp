@@ -147,8 +147,9 @@ class SimplicityCheck {
   static constexpr std::uint32_t chains_limit = 384;
 
   /// The check, by the strategy that suits the size. `find_crossings` false asks only whether
-  /// rings touch (no orientation tests), for runs that skip the check: whether a position
-  /// repeats (a sort); beyond chains_limit that is not asked at all (unknown).
+  /// rings touch (no orientation tests), for runs that skip the check: by the box rows up to
+  /// few_edges_limit, then whether a position repeats (a sort); beyond chains_limit that is not
+  /// asked at all (unknown).
   Verdict check(const CleanPolygon& polygon, const RunContext& ctx, bool find_crossings);
 
   /// `grid_only` (never a sweep, tiny cells: every level of the grid is exercised) and

@@ -451,6 +451,27 @@ TEST(Simplicity, TJunctionsAgreeWithBruteForce) {
   EXPECT_GT(conflicts, 500);
 }
 
+/// Without the check, past few_edges_limit, whether rings touch is whether a position repeats:
+/// the same answer as the reference's every pair of edges, crossing or not, both ways.
+TEST(Simplicity, TouchingOnlyAgreesWithReferenceBetweenTheStrategies) {
+  std::mt19937 rng(31);
+  SimplicityCheck check;
+  int touching = 0, apart = 0;
+  for (int round = 0; round < 300; ++round) {
+    const CleanPolygon polygon =
+        random_polygon(rng, 1 + round % 3, 380 / (1 + round % 3), round % 2 ? 60 : 100000);
+    const std::size_t n = polygon.points.size();
+    if (n <= SimplicityCheck::few_edges_limit || n > SimplicityCheck::chains_limit) continue;
+    SCOPED_TRACE("round " + std::to_string(round));
+    const bool expected = Reference(polygon).touching();
+    EXPECT_EQ(check.check(polygon, RunContext{}, false).touching,
+              expected ? Verdict::Touching::yes : Verdict::Touching::no);
+    ++(expected ? touching : apart);
+  }
+  EXPECT_GT(touching, 30);  // both outcomes were exercised
+  EXPECT_GT(apart, 30);
+}
+
 /// unresolvable_conflict_at agrees with the reference on the edge find_violation reports, and
 /// where it says no split helps, the T-junction sweep it spares stops at a conflict too (the
 /// engine's answer, not_simple, is the same either way).
