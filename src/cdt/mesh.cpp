@@ -9,6 +9,14 @@
 namespace pear::detail {
 namespace {
 
+/// An array left unfilled: every entry is written before it is read. (new T[n] of a scalar
+/// leaves it so; std::make_unique_for_overwrite does the same, but libc++ 14, the WebAssembly
+/// build's, lacks it.)
+template <class T>
+std::unique_ptr<T[]> unfilled(std::size_t count) {
+  return std::unique_ptr<T[]>(new T[count]);
+}
+
 /// The edges to match, as (low, high) caller indices: every half-edge e < half_edges (3t + k),
 /// then every ring edge (half_edges + its first clean vertex).
 struct EdgeKeys {
@@ -87,7 +95,7 @@ void place_chunks(EdgeBuckets& buckets) {
     for (std::size_t c = 0; c < parts; ++c) at += std::exchange(buckets.counts[c * parts + b], at);
   }
   buckets.begin[parts] = at;
-  buckets.edges = std::make_unique_for_overwrite<std::uint32_t[]>(at);
+  buckets.edges = unfilled<std::uint32_t>(at);
 }
 
 /// Makes h and g twins, counted in `pairs` (a bucket's own count: buckets run in parallel).
@@ -217,10 +225,10 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     mesh.interior_edges = 0;
     mesh.twin.assign(3 * triangles.size(), no_twin);
     keys.half_edges = 3 * triangles.size();
-    keys.low = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
-    keys.high = std::make_unique_for_overwrite<std::uint32_t[]>(edges);
+    keys.low = unfilled<std::uint32_t>(edges);
+    keys.high = unfilled<std::uint32_t>(edges);
     buckets.counts.assign(buckets.parts * buckets.parts, 0);
-    if (buckets.parts > 1) buckets.bucket = std::make_unique_for_overwrite<std::uint8_t[]>(edges);
+    if (buckets.parts > 1) buckets.bucket = unfilled<std::uint8_t>(edges);
     buckets.bad_end.assign(buckets.parts, 0);
   });
   ctx.run_tasks("cdt adjacency: edges", buckets.parts, [&](std::size_t c) {
