@@ -67,12 +67,10 @@ void Engine::check(bool find_crossings, const RunContext& ctx) {
   if (!verdict_.violation) return;
   // A crossing at the smallest edge in conflict: no split makes the polygon simple, and the
   // T-junction sweep (most of a not-simple polygon's check) is not needed to say so.
-  if (simplicity_.unresolvable_conflict_at(clean_, *verdict_.violation, ctx)) {
-    found(Issue::not_simple, clean_.original[*verdict_.violation]);
-    verdict_.touching = Verdict::Touching::unknown;
-    return;
-  }
-  if (const auto left = split_t_junctions(ctx, *verdict_.violation)) {
+  const auto left = simplicity_.unresolvable_conflict_at(clean_, *verdict_.violation, ctx)
+                        ? verdict_.violation
+                        : split_t_junctions(ctx, *verdict_.violation);
+  if (left) {
     found(Issue::not_simple, clean_.original[*left]);
     verdict_.touching = Verdict::Touching::unknown;  // a crossing may hide a touching pair
     return;
