@@ -164,7 +164,7 @@ bool SimplicityCheck::unresolvable_conflict_at(const CleanPolygon& polygon, std:
 /// they are in), each run's edges listed in increasing x. Within a run, edges that are not
 /// neighbours cannot meet: their x-ranges are apart, or touch only across a run of vertical
 /// edges, which would have to fold back (a neighbour conflict) to bring them together.
-void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
+bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges) {
   chain_order_.clear();
   chains_.clear();
   for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
@@ -184,7 +184,7 @@ void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
     for (std::uint32_t e = start, step = 0; step < end - first; ++step) {
       const std::int8_t d = direction_[e];
       if (step == 0 || (d != 0 && direction != 0 && d != direction)) {
-        chains_.push_back({static_cast<std::uint32_t>(chain_order_.size()), 0, false, 0, 0});
+        chains_.push_back({static_cast<std::uint32_t>(chain_order_.size()), 0, false, 0, 0, 0, 0});
         direction = d;
       } else if (direction == 0) {
         direction = d;
@@ -195,17 +195,54 @@ void SimplicityCheck::monotone_chains(const CleanPolygon& polygon) {
       e = e + 1 == end ? first : e + 1;
     }
   }
+  if (chains_.size() * min_chain_edges > chain_order_.size() + min_chain_edges) return false;
   for (Chain& chain : chains_) {
     if (chain.decreasing)
       std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
     chain.x0 = edges_.boxes[chain_order_[chain.begin]].x0;
     chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
+    chain.y0 = INFINITY, chain.y1 = -INFINITY;
+    for (std::uint32_t i = chain.begin; i < chain.end; ++i) {
+      const EdgeBox& box = edges_.boxes[chain_order_[i]];
+      chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
+    }
   }
   std::sort(chains_.begin(), chains_.end(),
             [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
+  return true;
 }
 
 namespace {
+
+/// How often the rings turn back in x (about the number of runs monotone in x): one pass, no
+/// branch but at the ends of the rings.
+std::size_t x_reversals(const CleanPolygon& polygon) {
+  const Point* pts = polygon.points.data();
+  std::size_t reversals = 0;
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
+    const auto direction = [](double dx) { return (dx > 0) - (dx < 0); };
+    // Entering the ring from its last edge that is not vertical: a cycle turns back evenly.
+    int before = direction(pts[first].x - pts[last].x);
+    for (std::uint32_t i = last; before == 0 && i > first; --i)
+      before = direction(pts[i].x - pts[i - 1].x);
+    for (std::uint32_t i = first; i < last; ++i) {
+      const int d = direction(pts[i + 1].x - pts[i].x);
+      reversals += d * before < 0;
+      before = d != 0 ? d : before;
+    }
+    reversals += direction(pts[first].x - pts[last].x) * before < 0;
+  }
+  return reversals;
+}
+
+/// Whether the runs monotone in x are worth trying past chains_limit: not when they are short
+/// (fractals, stars, grids of small holes: 1.5-2.3 edges a run), nor when there are more than a
+/// few long ones (they may be wound around each other, as a spiral's are).
+bool runs_worth_trying(const CleanPolygon& polygon) {
+  const std::size_t runs = x_reversals(polygon), n = polygon.points.size();
+  return runs * 3 <= n && (runs <= 16 || runs * 64 >= n);
+}
 
 /// The few-edges strategies' shared set-up, sequentially: each edge's successor, its box handed
 /// to `store(e, a, b)`; returns the smallest edge of a fold-back (a ring turning straight back
@@ -304,9 +341,54 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
   return verdict_of(smallest, touching);
 }
 
-/// Every pair of edges from two runs monotone in x whose x-ranges meet.
-Verdict SimplicityCheck::check_chains(const CleanPolygon& polygon, bool find_crossings) {
+/// Whether the pairs of runs whose boxes meet, at the shorter run's edges a pair (a window
+/// walks at least those), stay within `budget` looks: runs wound around each other (a spiral)
+/// are found before their edges are walked.
+bool SimplicityCheck::chains_within(std::size_t budget) const {
+  std::size_t looks = 0;
+  for (std::size_t i = 0; i < chains_.size(); ++i) {
+    const Chain& chain = chains_[i];
+    for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chain.x1; ++j) {
+      const Chain& other = chains_[j];
+      const bool meet = other.y0 <= chain.y1 && chain.y0 <= other.y1;
+      looks += 1 + meet * std::min(chain.end - chain.begin, other.end - other.begin);
+    }
+    if (looks > budget) return false;
+  }
+  return true;
+}
+
+/// Every pair of edges of two runs whose x-ranges meet, to visit(e, f): for each edge of the
+/// run that starts first, a window of the other's (both in increasing x). Along a run both ends
+/// of the edges' x-ranges only grow: its edges that end before the other run starts are
+/// skipped by a binary search, and those that start after it ends are not looked at. Returns
+/// the looks taken.
+template <class Visit>
+std::size_t SimplicityCheck::walk_chain_pair(const Chain& chain, const Chain& other,
+                                             Visit&& visit) const {
+  const auto& boxes = edges_.boxes;
+  const auto run = std::span(chain_order_).subspan(chain.begin, chain.end - chain.begin);
+  std::uint32_t window = other.begin;
+  std::size_t looks = 1;
+  const auto first = std::partition_point(run.begin(), run.end(),
+                                          [&](std::uint32_t e) { return boxes[e].x1 < other.x0; });
+  for (auto it = first; it != run.end() && boxes[*it].x0 <= other.x1; ++it) {
+    const std::uint32_t e = *it;
+    while (window < other.end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
+    std::uint32_t m = window;
+    for (; m < other.end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
+      visit(e, chain_order_[m]);
+    looks += 1 + (m - window);
+  }
+  return looks;
+}
+
+/// Every pair of edges from two runs monotone in x whose boxes meet; none past `budget` looks
+/// (unlimited: every_pair), or past chains_limit edges when there is a conflict.
+std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon,
+                                                     bool find_crossings, std::size_t budget) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  const bool limited = budget != every_pair;
   edges_.boxes.resize(n);
   direction_.resize(n);
   std::uint32_t smallest = link_edges(
@@ -316,37 +398,29 @@ Verdict SimplicityCheck::check_chains(const CleanPolygon& polygon, bool find_cro
         direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
       });
   bool touching = false;
-  const auto& boxes = edges_.boxes;
   const auto visit = [&](std::uint32_t e, std::uint32_t f) {
     visit_pair(edges_, e, f, find_crossings, smallest, touching);
   };
-  // For each edge of the run that starts first, a window of the other run's edges (both in
-  // increasing x). Along a run both ends of the edges' x-ranges only grow: its edges that end
-  // before the other run starts are skipped by a binary search, and those that start after it
-  // ends are not looked at.
-  monotone_chains(polygon);
-  const auto chain_edges = [&](const Chain& c) {
-    return std::span(chain_order_).subspan(c.begin, c.end - c.begin);
-  };
+  if (!monotone_chains(polygon, limited ? 3 : 0)) return std::nullopt;
+  // Long runs may wind around each other (a spiral): then a look at their pairs first, which
+  // short runs (coasts: 5-7 edges) would pay as much for as for the walk.
+  if (limited && chains_.size() * 64 < n && !chains_within(budget)) return std::nullopt;
+  std::size_t spent = 0;
   for (std::size_t i = 0; i < chains_.size(); ++i) {
-    const auto run = chain_edges(chains_[i]);
-    for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chains_[i].x1; ++j) {
+    const Chain& chain = chains_[i];
+    for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chain.x1; ++j) {
       const Chain& other = chains_[j];
-      std::uint32_t window = other.begin;
-      const auto first = std::partition_point(
-          run.begin(), run.end(), [&](std::uint32_t e) { return boxes[e].x1 < other.x0; });
-      for (auto it = first; it != run.end() && boxes[*it].x0 <= other.x1; ++it) {
-        const std::uint32_t e = *it;
-        while (window < other.end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
-        for (std::uint32_t m = window; m < other.end && boxes[chain_order_[m]].x0 <= boxes[e].x1;
-             ++m)
-          visit(e, chain_order_[m]);
-      }
+      // Runs apart in y are not looked into at all.
+      spent +=
+          other.y0 > chain.y1 || chain.y0 > other.y1 ? 1 : walk_chain_pair(chain, other, visit);
+      if (spent > budget) return std::nullopt;
     }
   }
   // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
   // found above): then every pair, for the smallest edge in any conflict, as the grid gives.
   if (find_crossings && smallest != SmallestViolation::none) {
+    if (n > chains_limit) return std::nullopt;  // the grid's search names it (not quadratic)
+    const auto& boxes = edges_.boxes;
     for (std::uint32_t e = 0; e + 1 < n; ++e)
       for (std::uint32_t f = e + 1; f < n; ++f)
         if (boxes[f].x0 <= boxes[e].x1 && boxes[e].x0 <= boxes[f].x1) visit(e, f);
@@ -374,13 +448,23 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     return verdict;
   }
   if (n > chains_limit) {
+    if (!find_crossings) return verdict;
+    // Runs of edges monotone in x first, while they stay near linear (a comb, countries,
+    // coasts: Australia's check 70M instructions against the grid's 206M); the grid where they
+    // would not (fractals, spirals), to name the edge of a conflict, and past two partitions:
+    // the runs are serial, the grid's search parallel (its span the shorter from four on).
+    std::optional<Verdict> by_chains;
+    if (n <= chains_try_limit && ctx.partitions <= 2 && runs_worth_trying(polygon))
+      ctx.run_serial("check simplicity",
+                     [&] { by_chains = check_chains(polygon, true, chains_budget * n); });
+    if (by_chains) return *by_chains;
     // Parallel on ctx's runner; records its own phases in the profile.
-    if (find_crossings) verdict.violation = find_violation(polygon, ctx);
+    verdict.violation = find_violation(polygon, ctx);
     return verdict;
   }
   ctx.run_serial("check simplicity", [&] {
     verdict = n <= few_edges_limit ? check_all_pairs(polygon, find_crossings)
-                                   : check_chains(polygon, find_crossings);
+                                   : *check_chains(polygon, find_crossings, every_pair);
   });
   // With few edges a hole that is not where a hole may be is cheap to find at once.
   if (find_crossings && !verdict.violation && verdict.touching == Verdict::Touching::no &&

@@ -14,6 +14,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -145,6 +146,10 @@ class SimplicityCheck {
   /// (find_violation). Measured: docs/engine.md, "Strategies".
   static constexpr std::uint32_t few_edges_limit = 128;
   static constexpr std::uint32_t chains_limit = 384;
+  /// Past chains_limit the runs are tried first up to this many edges (serial: beyond, the
+  /// grid's parallel search), and given up for the grid after chains_budget looks per edge.
+  static constexpr std::uint32_t chains_try_limit = 1 << 20;
+  static constexpr std::size_t chains_budget = 8;
 
   /// The check, by the strategy that suits the size. `find_crossings` false asks only whether
   /// rings touch (no orientation tests), for runs that skip the check: by the box rows up to
@@ -181,8 +186,16 @@ class SimplicityCheck {
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
   bool repeats_a_position(const CleanPolygon& polygon);
   Verdict check_all_pairs(const CleanPolygon& polygon, bool find_crossings);
-  Verdict check_chains(const CleanPolygon& polygon, bool find_crossings);
-  void monotone_chains(const CleanPolygon& polygon);
+  /// Every pair of edges in two runs whose boxes meet; none when that would look at more than
+  /// `budget` pairs of runs and edges (the grid is then the better index).
+  static constexpr std::size_t every_pair = std::numeric_limits<std::size_t>::max();
+  std::optional<Verdict> check_chains(const CleanPolygon& polygon, bool find_crossings,
+                                      std::size_t budget);
+  bool monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges);
+  bool chains_within(std::size_t budget) const;
+  struct Chain;
+  template <class Visit>
+  std::size_t walk_chain_pair(const Chain& chain, const Chain& other, Visit&& visit) const;
 
   RingEdges edges_;
   RootGrid root_;
@@ -192,7 +205,7 @@ class SimplicityCheck {
   struct Chain {
     std::uint32_t begin, end;
     bool decreasing;
-    double x0, x1;
+    double x0, x1, y0, y1;
   };
   std::vector<Chain> chains_;
   std::vector<std::uint32_t> chain_order_;

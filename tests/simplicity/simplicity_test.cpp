@@ -177,7 +177,15 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
   // runs monotone in x up to 384), and say whether the rings pass a point twice.
   const Verdict verdict = check.check(polygon, contexts.list[0], true);
   ASSERT_EQ(verdict.violation.has_value(), expected.has_value()) << "check";
-  if (polygon.points.size() > SimplicityCheck::chains_limit) return;  // the automatic method
+  if (polygon.points.size() > SimplicityCheck::chains_limit) {
+    // The runs or the grid: the grid's answer either way; the rings' touching known exactly
+    // when the runs decided.
+    EXPECT_EQ(verdict.violation, check.find_violation(polygon, contexts.list[0]));
+    if (!expected && verdict.touching != Verdict::Touching::unknown) {
+      EXPECT_EQ(verdict.touching == Verdict::Touching::yes, reference.touching());
+    }
+    return;
+  }
   EXPECT_EQ(verdict.violation, expected) << "check";
   if (!expected) {
     const auto touching = reference.touching() ? Verdict::Touching::yes : Verdict::Touching::no;
@@ -449,6 +457,78 @@ TEST(Simplicity, TJunctionsAgreeWithBruteForce) {
   }
   EXPECT_GT(junctions, 500) << "T-junctions only";  // both outcomes were exercised
   EXPECT_GT(conflicts, 500);
+}
+
+/// A polygon past chains_limit made of long runs monotone in x: a shell whose top is one run
+/// of `top` vertices (x falling by 2, y in [60, 100]) over a flat bottom, and small triangular
+/// holes below, 4 apart. `flaw` 0 leaves it simple; 1 lifts a hole's apex onto a top vertex
+/// (touching, still simple); 2 drops a top vertex below the bottom (crossings); 3 puts a
+/// vertical fold-back into the top; 4 lifts a hole's apex above the top (crossing the shell);
+/// 5 puts a hole's corner inside the bottom edge (a T-junction).
+CleanPolygon long_runs(std::mt19937& rng, int top, int holes, int flaw) {
+  std::uniform_int_distribution<int> height(60, 100);
+  CleanPolygon polygon;
+  auto& pts = polygon.points;
+  const double width = 2.0 * top;
+  pts.push_back({0, 0});
+  pts.push_back({width, 0});
+  for (int i = 0; i < top; ++i) pts.push_back({width - 2.0 * i, double(height(rng))});
+  const std::size_t pick = 3 + rng() % static_cast<std::size_t>(top - 6);
+  if (flaw == 2) pts[pick].y = -5;
+  if (flaw == 3) {
+    const Point at = pts[pick];
+    pts.insert(pts.begin() + static_cast<std::ptrdiff_t>(pick) + 1,
+               {Point{at.x, at.y + 7}, Point{at.x, at.y + 3}});
+  }
+  polygon.ring_starts = {0, static_cast<std::uint32_t>(pts.size())};
+  const int flawed = static_cast<int>(rng() % static_cast<std::size_t>(holes));
+  for (int h = 0; h < holes; ++h) {
+    const double x = 4.0 * (1 + h * (top / 2 - 2) / holes);
+    Point apex{x + 2, 20};
+    if (h == flawed && flaw == 1) apex = pts[2 + static_cast<std::size_t>((width - apex.x) / 2)];
+    if (h == flawed && flaw == 4) apex.y = 120;
+    pts.push_back({x + 1, h == flawed && flaw == 5 ? 0.0 : 10.0});
+    pts.push_back(apex);
+    pts.push_back({x + 3, 10});
+    polygon.ring_starts.push_back(static_cast<std::uint32_t>(pts.size()));
+  }
+  polygon.original.resize(pts.size());
+  std::iota(polygon.original.begin(), polygon.original.end(), 0u);
+  polygon.ring_source.resize(polygon.ring_count());
+  std::iota(polygon.ring_source.begin(), polygon.ring_source.end(), 0u);
+  return polygon;
+}
+
+/// Past chains_limit the runs decide where they stay cheap: the grid's violation (the smallest
+/// edge in a conflict), and whether the rings touch exactly as every pair of edges says; past
+/// two partitions the grid alone (touching unknown), with the same violation.
+TEST(Simplicity, RunsPastChainsLimitAgreeWithReferenceAndGrid) {
+  std::mt19937 rng(77);
+  SimplicityCheck check;
+  std::array<int, 6> seen{};
+  for (int round = 0; round < 48; ++round) {
+    const int flaw = round % 6;
+    const CleanPolygon polygon = long_runs(rng, 400 + 97 * round, 8 + round, flaw);
+    ASSERT_GT(polygon.points.size(), SimplicityCheck::chains_limit);
+    SCOPED_TRACE("round " + std::to_string(round));
+    const Reference reference(polygon);
+    const auto expected = reference.smallest_violation();
+    ASSERT_EQ(expected.has_value(), flaw >= 2) << "the flaw is what the test meant";
+    const Verdict verdict = check.check(polygon, RunContext{}, true);
+    EXPECT_EQ(verdict.violation, check.find_violation(polygon, RunContext{}));
+    ASSERT_EQ(verdict.violation.has_value(), expected.has_value());
+    if (expected) {
+      EXPECT_TRUE(reference.involved(*verdict.violation));
+    } else {
+      EXPECT_EQ(verdict.touching, flaw == 1 ? Verdict::Touching::yes : Verdict::Touching::no);
+      EXPECT_EQ(reference.touching(), flaw == 1);
+    }
+    const Verdict on_grid = check.check(polygon, RunContext{.partitions = 4}, true);
+    EXPECT_EQ(on_grid.violation, verdict.violation);
+    EXPECT_EQ(on_grid.touching, Verdict::Touching::unknown);
+    ++seen[static_cast<std::size_t>(flaw)];
+  }
+  for (int count : seen) EXPECT_EQ(count, 8);
 }
 
 /// Without the check, past few_edges_limit, whether rings touch is whether a position repeats:
