@@ -384,19 +384,20 @@ std::size_t SimplicityCheck::walk_chain_pair(const Chain& chain, const Chain& ot
 }
 
 /// Every pair of edges from two runs monotone in x whose boxes meet; none past `budget` looks
-/// (unlimited: every_pair), or past chains_limit edges when there is a conflict.
+/// (unlimited: every_pair), or past chains_limit edges when a ring folds back.
 std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon,
                                                      bool find_crossings, std::size_t budget) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   const bool limited = budget != every_pair;
   edges_.boxes.resize(n);
   direction_.resize(n);
-  std::uint32_t smallest = link_edges(
+  const std::uint32_t fold = link_edges(
       polygon, edges_, find_crossings, [&](std::uint32_t e, const Point& a, const Point& b) {
         edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
                            std::max(a.y, b.y)};
         direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
       });
+  std::uint32_t smallest = fold;
   bool touching = false;
   const auto visit = [&](std::uint32_t e, std::uint32_t f) {
     visit_pair(edges_, e, f, find_crossings, smallest, touching);
@@ -416,10 +417,11 @@ std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon
       if (spent > budget) return std::nullopt;
     }
   }
-  // A run may hide a conflict behind a vertical fold-back within it (a neighbour conflict,
-  // found above): then every pair, for the smallest edge in any conflict, as the grid gives.
-  if (find_crossings && smallest != SmallestViolation::none) {
-    if (n > chains_limit) return std::nullopt;  // the grid's search names it (not quadratic)
+  // Without a fold, every pair that can conflict was looked at: `smallest` is the smallest
+  // edge in any conflict. A run may hide a conflict behind a vertical fold-back within it (a
+  // neighbour conflict, found above): then every pair, or (not quadratic) the grid.
+  if (find_crossings && fold != SmallestViolation::none) {
+    if (n > chains_limit) return std::nullopt;
     const auto& boxes = edges_.boxes;
     for (std::uint32_t e = 0; e + 1 < n; ++e)
       for (std::uint32_t f = e + 1; f < n; ++f)
@@ -451,8 +453,8 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     if (!find_crossings) return verdict;
     // Runs of edges monotone in x first, while they stay near linear (a comb, countries,
     // coasts: Australia's check 70M instructions against the grid's 206M); the grid where they
-    // would not (fractals, spirals), to name the edge of a conflict, and past two partitions:
-    // the runs are serial, the grid's search parallel (its span the shorter from four on).
+    // would not (fractals, spirals), where a ring folds back, and past two partitions: the
+    // runs are serial, the grid's search parallel (its span the shorter from four on).
     std::optional<Verdict> by_chains;
     if (n <= chains_try_limit && ctx.partitions <= 2 && runs_worth_trying(polygon))
       ctx.run_serial("check simplicity",

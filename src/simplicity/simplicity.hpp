@@ -126,7 +126,8 @@ std::optional<MisplacedHole> find_misplaced_hole_among_few(const CleanPolygon& p
 
 /// What SimplicityCheck::check found.
 struct Verdict {
-  /// The first vertex of the smallest edge in a conflict, as find_violation gives it.
+  /// The first vertex of an edge in a conflict: the smallest such edge where the runs or the
+  /// few-edges strategies decide, else as find_violation gives it.
   std::optional<std::uint32_t> violation;
   /// Whether two edges that are not neighbours share an endpoint position (rings touching at
   /// vertices): the engine then relinks the passes through such points (TouchingPoints).
