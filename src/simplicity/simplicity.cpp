@@ -456,7 +456,7 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     // would not (fractals, spirals), where a ring folds back, and past two partitions: the
     // runs are serial, the grid's search parallel (its span the shorter from four on).
     std::optional<Verdict> by_chains;
-    if (n <= chains_try_limit && ctx.partitions <= 2 && runs_worth_trying(polygon))
+    if (ctx.partitions <= 2 && runs_worth_trying(polygon))
       ctx.run_serial("check simplicity",
                      [&] { by_chains = check_chains(polygon, true, chains_budget * n); });
     if (by_chains) return *by_chains;

@@ -147,9 +147,8 @@ class SimplicityCheck {
   /// (find_violation). Measured: docs/engine.md, "Strategies".
   static constexpr std::uint32_t few_edges_limit = 128;
   static constexpr std::uint32_t chains_limit = 384;
-  /// Past chains_limit the runs are tried first up to this many edges (serial: beyond, the
-  /// grid's parallel search), and given up for the grid after chains_budget looks per edge.
-  static constexpr std::uint32_t chains_try_limit = 1 << 20;
+  /// Past chains_limit the runs are tried first (at most two partitions: they are serial),
+  /// and given up for the grid after chains_budget looks per edge.
   static constexpr std::size_t chains_budget = 8;
 
   /// The check, by the strategy that suits the size. `find_crossings` false asks only whether
