@@ -196,6 +196,7 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
     }
   }
   if (chains_.size() * min_chain_edges > chain_order_.size() + min_chain_edges) return false;
+  chain_boxes_.resize(chain_order_.size());
   for (Chain& chain : chains_) {
     if (chain.decreasing)
       std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
@@ -203,7 +204,7 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
     chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
     chain.y0 = INFINITY, chain.y1 = -INFINITY;
     for (std::uint32_t i = chain.begin; i < chain.end; ++i) {
-      const EdgeBox& box = edges_.boxes[chain_order_[i]];
+      const EdgeBox& box = chain_boxes_[i] = edges_.boxes[chain_order_[i]];
       chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
     }
   }
@@ -366,18 +367,19 @@ bool SimplicityCheck::chains_within(std::size_t budget) const {
 template <class Visit>
 std::size_t SimplicityCheck::walk_chain_pair(const Chain& chain, const Chain& other,
                                              Visit&& visit) const {
-  const auto& boxes = edges_.boxes;
-  const auto run = std::span(chain_order_).subspan(chain.begin, chain.end - chain.begin);
+  const EdgeBox* boxes = chain_boxes_.data();  // in run order: the walk reads them in turn
   std::uint32_t window = other.begin;
   std::size_t looks = 1;
-  const auto first = std::partition_point(run.begin(), run.end(),
-                                          [&](std::uint32_t e) { return boxes[e].x1 < other.x0; });
-  for (auto it = first; it != run.end() && boxes[*it].x0 <= other.x1; ++it) {
-    const std::uint32_t e = *it;
-    while (window < other.end && boxes[chain_order_[window]].x1 < boxes[e].x0) ++window;
+  std::uint32_t i = static_cast<std::uint32_t>(
+      std::partition_point(boxes + chain.begin, boxes + chain.end,
+                           [&](const EdgeBox& box) { return box.x1 < other.x0; }) -
+      boxes);
+  for (; i < chain.end && boxes[i].x0 <= other.x1; ++i) {
+    const EdgeBox& s = boxes[i];
+    while (window < other.end && boxes[window].x1 < s.x0) ++window;
     std::uint32_t m = window;
-    for (; m < other.end && boxes[chain_order_[m]].x0 <= boxes[e].x1; ++m)
-      visit(e, chain_order_[m]);
+    for (; m < other.end && boxes[m].x0 <= s.x1; ++m)
+      if ((boxes[m].y0 <= s.y1) & (s.y0 <= boxes[m].y1)) visit(chain_order_[i], chain_order_[m]);
     looks += 1 + (m - window);
   }
   return looks;

@@ -209,6 +209,7 @@ class SimplicityCheck {
   };
   std::vector<Chain> chains_;
   std::vector<std::uint32_t> chain_order_;
+  std::vector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
   std::vector<Point> sorted_points_;    ///< repeats_a_position's copy
 
