@@ -114,24 +114,94 @@ void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::
   }
 }
 
+namespace {
+
+/// A border half-edge with its edge's ends, so that sorting compares stored keys instead of
+/// reading triangles and points at every comparison.
+struct KeyedBorder {
+  Point low, high;  ///< EdgeEnds'
+  std::uint32_t h = 0;
+  /// By ends alone: the two half-edges of an edge are equal.
+  friend bool ends_before(const KeyedBorder& a, const KeyedBorder& b) {
+    return a.low != b.low ? lexicographic_less(a.low, b.low) : lexicographic_less(a.high, b.high);
+  }
+  friend bool operator<(const KeyedBorder& a, const KeyedBorder& b) {
+    if (a.low != b.low || a.high != b.high) return ends_before(a, b);
+    return a.h < b.h;
+  }
+};
+
+/// Border half-edges per range task: fewer are paired on one thread.
+constexpr std::size_t borders_per_range = 4096;
+
+}  // namespace
+
 std::vector<std::uint32_t> relink_borders(Mesh& mesh,
-                                          const std::vector<std::vector<std::uint32_t>>& sets) {
-  std::vector<std::uint32_t> all;
-  for (const auto& borders : sets) all.insert(all.end(), borders.begin(), borders.end());
+                                          const std::vector<std::vector<std::uint32_t>>& sets,
+                                          const RunContext& ctx) {
   // By position, not caller index: see pair_by_position in mesh.cpp.
-  const auto ends = [&](std::uint32_t h) {
-    return EdgeEnds(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
+  const auto keyed = [&](std::uint32_t h) {
+    const EdgeEnds ends(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
+    return KeyedBorder{ends.low, ends.high, h};
   };
-  std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
-    const EdgeEnds e = ends(h), f = ends(g);
-    return e != f ? e < f : h < g;
+  std::vector<std::size_t> offset(1, 0);
+  for (const auto& borders : sets) offset.push_back(offset.back() + borders.size());
+  const std::size_t total = offset.back();
+  // Ranges of the sorted order, cut at keys sampled every k-th border (in set order, so the
+  // cuts depend on the partitions only): each range is sorted and paired by its own task, and
+  // the ranges one after another are the whole order, as one sort would give it.
+  const std::size_t ranges = std::clamp<std::size_t>(total / borders_per_range, 1, 256);
+  std::vector<KeyedBorder> cuts;
+  for (std::size_t k = 1; k < ranges; ++k) {
+    const std::size_t i = k * total / ranges;
+    const std::size_t s = static_cast<std::size_t>(
+        std::upper_bound(offset.begin(), offset.end(), i) - offset.begin() - 1);
+    cuts.push_back(keyed(sets[s][i - offset[s]]));
+  }
+  std::sort(cuts.begin(), cuts.end());
+  // By ends alone, so that both half-edges of an edge fall in one range.
+  const auto range_of = [&](const KeyedBorder& b) {
+    return static_cast<std::size_t>(
+        std::upper_bound(
+            cuts.begin(), cuts.end(), b,
+            [](const KeyedBorder& x, const KeyedBorder& y) { return ends_before(x, y); }) -
+        cuts.begin());
+  };
+  // Counted per set and range, then each set scatters its borders to their ranges.
+  std::vector<std::size_t> counts(sets.size() * ranges, 0);
+  std::vector<std::uint32_t> range(total);
+  ctx.run_tasks("cdt relink borders: keys", sets.size(), [&](std::size_t s) {
+    for (std::size_t i = 0; i < sets[s].size(); ++i) {
+      const std::size_t r = range_of(keyed(sets[s][i]));
+      range[offset[s] + i] = static_cast<std::uint32_t>(r);
+      ++counts[s * ranges + r];
+    }
+  });
+  std::vector<std::size_t> range_start(ranges + 1, 0), place(sets.size() * ranges);
+  for (std::size_t r = 0, at = 0; r < ranges; ++r) {
+    range_start[r] = at;
+    for (std::size_t s = 0; s < sets.size(); ++s)
+      place[s * ranges + r] = at, at += counts[s * ranges + r];
+  }
+  range_start[ranges] = total;
+  std::vector<KeyedBorder> all(total);
+  ctx.run_tasks("cdt relink borders: scatter", sets.size(), [&](std::size_t s) {
+    for (std::size_t i = 0; i < sets[s].size(); ++i)
+      all[place[s * ranges + range[offset[s] + i]]++] = keyed(sets[s][i]);
+  });
+  std::vector<std::vector<std::uint32_t>> firsts(ranges);
+  ctx.run_tasks("cdt relink borders: pair", ranges, [&](std::size_t r) {
+    const auto first = all.begin() + static_cast<std::ptrdiff_t>(range_start[r]);
+    const auto last = all.begin() + static_cast<std::ptrdiff_t>(range_start[r + 1]);
+    std::sort(first, last);
+    for (auto it = first; it + 1 < last; it += 2) {
+      mesh.twin[it->h] = (it + 1)->h;
+      mesh.twin[(it + 1)->h] = it->h;
+      firsts[r].push_back(it->h);
+    }
   });
   std::vector<std::uint32_t> first_of_pair;
-  for (std::size_t i = 0; i + 1 < all.size(); i += 2) {
-    mesh.twin[all[i]] = all[i + 1];
-    mesh.twin[all[i + 1]] = all[i];
-    first_of_pair.push_back(all[i]);
-  }
+  for (const auto& f : firsts) first_of_pair.insert(first_of_pair.end(), f.begin(), f.end());
   return first_of_pair;
 }
 

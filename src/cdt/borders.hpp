@@ -17,10 +17,12 @@ void collect_borders(const Mesh& mesh, const TrianglePartition& partition, std::
                      std::vector<std::uint32_t>& borders);
 
 /// Pairs the border half-edges again by their endpoints' positions: the sets' flips moved them
-/// to other slots without telling the other side. Returns one half-edge of each pair, in a
-/// fixed order.
+/// to other slots without telling the other side. Returns one half-edge of each pair, in the
+/// order of their ends (then half-edge numbers). In parallel: ranges of that order, cut at
+/// sampled keys, are sorted and paired by tasks of their own.
 std::vector<std::uint32_t> relink_borders(Mesh& mesh,
-                                          const std::vector<std::vector<std::uint32_t>>& sets);
+                                          const std::vector<std::vector<std::uint32_t>>& sets,
+                                          const RunContext& ctx);
 
 /// Flips until every edge is locally Delaunay, given that only the `suspects` may not be, in
 /// rounds: test all suspects (in parallel), pick in list order those whose flips touch disjoint

@@ -75,8 +75,8 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
     collect_borders(mesh, partition, static_cast<std::uint32_t>(s), borders[s]);
   });
   for (std::size_t f : flips) stats.flips_in_partitions += f;
-  std::vector<std::uint32_t> suspects;
-  ctx.run_serial("cdt relink borders", [&] { suspects = relink_borders(mesh, borders); });
+  // Records its own phases ("cdt relink borders: ...").
+  std::vector<std::uint32_t> suspects = relink_borders(mesh, borders, ctx);
   stats.flips_on_borders = flip_borders(mesh, std::move(suspects), ctx, budget);
   stats.flips = stats.flips_in_partitions + stats.flips_on_borders;
 }

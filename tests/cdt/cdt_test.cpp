@@ -109,6 +109,35 @@ TEST(Cdt, BorderRoundsRunInParallelAndGiveTheSameCdt) {
   }
 }
 
+// Many sets give more border half-edges than one task pairs: they are paired in ranges of
+// their order, and the two half-edges of an edge must land in one range.
+TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
+  const Polygon polygon = generate_polygon("random-holes", 60000, 11);
+  CdtCheck expect_cdt(polygon);
+  Triangles first;
+  for (unsigned threads : {1u, 2u}) {
+    RunProfile profile;
+    Options options{.algorithm = Algorithm::sequential,
+                    .delaunay = true,
+                    .threads = threads,
+                    .partitions = 64,
+                    .executor = executor_for(threads),
+                    .profile = &profile};
+    const auto result = triangulate(polygon, options);
+    ASSERT_EQ(result.status, Status::ok);
+    const auto pair = std::find_if(profile.phases.begin(), profile.phases.end(), [](const auto& p) {
+      return p.name == "cdt relink borders: pair";
+    });
+    ASSERT_NE(pair, profile.phases.end());
+    EXPECT_GE(pair->task_seconds.size(), 3u) << "the borders fit one range: nothing tested";
+    if (threads == 1) {
+      first = result.triangles;
+      expect_cdt(result.triangles);
+    }
+    EXPECT_EQ(result.triangles, first) << threads << " threads";
+  }
+}
+
 TEST(Cdt, WithoutDelaunayNoStatistics) {
   const auto result = triangulate(generate_polygon("star", 500, 3));
   EXPECT_EQ(result.delaunay.flips, 0u);

@@ -8,7 +8,9 @@
 #include <algorithm>
 #include <memory>
 
+#include "cdt/borders.hpp"
 #include "cdt/mesh.hpp"
+#include "cdt/partition.hpp"
 #include "clean/clean.hpp"
 #include "pear/generate.hpp"
 #include "pipeline/threading.hpp"
@@ -102,6 +104,51 @@ TEST(MeshBuildCdt, ValidAndTheSameAtEveryThreadCount) {
   for (unsigned threads : {2u, 3u, 8u, 16u}) {
     const auto many = testing::constrained_delaunay(polygon, Algorithm::sequential, threads, 16);
     EXPECT_EQ(many.triangles, one.triangles) << threads << " threads";
+  }
+}
+
+// The parallel flips' border relinking, with more border half-edges than one task pairs: with
+// every border twin wiped, it must restore exactly the twins the build made (no flips ran, so
+// they are still right), at every thread count, and list one half-edge of each pair in the
+// order of their ends, as one sort of them all gives it.
+TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
+  Triangulated t = triangulated(generate_polygon("random-holes", 60'000, 7));
+  Mesh reference;
+  ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, reference, RunContext{}));
+  TrianglePartition partition;
+  partition_triangles(reference, 64, partition);
+  std::vector<std::vector<std::uint32_t>> borders(partition.sets());
+  std::vector<std::uint32_t> all;
+  for (std::uint32_t s = 0; s < partition.sets(); ++s) {
+    collect_borders(reference, partition, s, borders[s]);
+    all.insert(all.end(), borders[s].begin(), borders[s].end());
+  }
+  ASSERT_GE(all.size(), 3u * 4096) << "too few borders for several ranges";
+  const auto ends = [&](std::uint32_t h) {
+    return EdgeEnds(reference.points[reference.origin(h)],
+                    reference.points[reference.destination(h)]);
+  };
+  std::sort(all.begin(), all.end(), [&](std::uint32_t h, std::uint32_t g) {
+    return ends(h) != ends(g) ? ends(h) < ends(g) : h < g;
+  });
+  std::vector<std::uint32_t> expected;
+  for (std::size_t i = 0; i < all.size(); i += 2) expected.push_back(all[i]);
+  for (unsigned threads : {1u, 4u}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    Workers workers;
+    RunProfile profile;
+    const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                         .partitions = 64,
+                         .profile = &profile};
+    Mesh mesh = reference;
+    for (std::uint32_t h : all) mesh.twin[h] = no_twin;
+    EXPECT_EQ(relink_borders(mesh, borders, ctx), expected);
+    EXPECT_EQ(mesh.twin, reference.twin);
+    const auto pair = std::find_if(profile.phases.begin(), profile.phases.end(), [](const auto& p) {
+      return p.name == "cdt relink borders: pair";
+    });
+    ASSERT_NE(pair, profile.phases.end());
+    EXPECT_GE(pair->task_seconds.size(), 3u);
   }
 }
 
