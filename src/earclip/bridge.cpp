@@ -5,126 +5,208 @@
 #include <numeric>
 
 namespace pear::detail {
-std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary) {
-  std::vector<std::uint32_t> unjoined;
-  const std::size_t rings = polygon.ring_count();
-  if (rings < 2) return unjoined;
-  b_ = &boundary;
-  Point lo = boundary.pos[0], hi = boundary.pos[0];
-  for (const Point& p : polygon.points) {
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-  }
-  // Each hole's ray and visibility search reads the cells it crosses. With few holes one cell
-  // is cheapest: a few scans of the edges cost less than placing them in a fine grid (a glyph
-  // with two holes spent a tenth of its run building one).
-  const std::size_t holes = rings - 1;
-  frame_.fit(lo, hi, holes <= few_holes ? 1 : polygon.points.size() / 2 + 1);
-  build_grid(static_cast<std::uint32_t>(polygon.points.size()));
-  merge_ring(polygon.ring_starts[0]);
+namespace {
 
-  order_.clear();
-  for (std::size_t r = 1; r < rings; ++r) order_.push_back(leftmost_node(polygon.ring_starts[r]));
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t a, std::uint32_t c) {
-    return lexicographic_less(boundary.pos[a], boundary.pos[c]) ||
-           (boundary.pos[a] == boundary.pos[c] && a < c);
-  });
-  for (std::uint32_t hole : order_) {
-    // Decide where the hole attaches before its own edges count, then splice.
-    const Point h = boundary.pos[hole];
-    const std::uint32_t touching = node_at(h, boundary.pos[boundary.next[hole]]);
-    if (touching != UINT32_MAX) {
-      merge_ring(hole);
-      splice_touching(touching, hole);
-      continue;
-    }
-    const RayHit hit = cast_left(h);
-    if (hit.touching_edge != UINT32_MAX) {
-      merge_ring(hole);
-      splice_into_edge(hit.touching_edge, hole);
-    } else if (hit.edge != UINT32_MAX) {
-      const std::uint32_t target = node_at(visible_target(h, hit), h);
-      merge_ring(hole);
-      splice_bridge(target, hole);
-    } else {
-      unjoined.push_back(hole);  // nothing to the left: the hole lies outside the outer ring
-    }
+/// Where segment lo-hi (lo the lower end, not horizontal) meets the leftward ray from h: not at
+/// all, left of h at x, or exactly through h (h strictly inside it). Exact but for x, which
+/// only ranks the crossings.
+enum class Crossing { none, left, through };
+
+Crossing ray_crossing(const Point& h, const Point& lo, const Point& hi, double& x) {
+  if (h.y < lo.y || h.y > hi.y) return Crossing::none;
+  const double side = orient2d(lo, hi, h);
+  if (side > 0) return Crossing::none;  // the edge lies to the right of h
+  if (side == 0) return !(h == lo) && !(h == hi) ? Crossing::through : Crossing::none;
+  x = h.y == lo.y ? lo.x : h.y == hi.y ? hi.x : lo.x + (h.y - lo.y) * (hi.x - lo.x) / (hi.y - lo.y);
+  return Crossing::left;
+}
+
+}  // namespace
+
+std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary,
+                                             const RunContext& ctx, bool in_parts) {
+  std::vector<std::uint32_t> unjoined;
+  redone_ = 0;
+  edges_split_ = false;
+  if (polygon.ring_count() < 2) return unjoined;
+  b_ = &boundary;
+  if (!in_parts || polygon.ring_count() - 1 <= few_holes) {
+    ctx.run_serial("bridge holes", [&] {
+      order_holes(polygon, ctx, false);
+      build_grid(polygon, ctx, false);
+      splice_all(polygon, false, unjoined);
+    });
+    return unjoined;
   }
+  order_holes(polygon, ctx, true);
+  build_grid(polygon, ctx, true);
+  find_all(ctx);
+  ctx.run_serial("bridge: splice", [&] { splice_all(polygon, true, unjoined); });
   return unjoined;
 }
 
-/// Every ring's nodes and edges into the grid. Edge v runs from node v (the rings are linked as
-/// cycles, nothing spliced yet).
-void HoleBridger::build_grid(std::uint32_t nodes) {
-  const std::size_t cells = frame_.cell_count();
-  if (cells == 1) {  // every node and edge in the one cell, in order: nothing to count
-    for (CellLists* lists : {&node_cells_, &edge_cells_}) {
-      lists->start = {0, nodes};
-      lists->head.assign(1, UINT32_MAX);
-      lists->added.clear();
-      lists->items.resize(nodes);
-      std::iota(lists->items.begin(), lists->items.end(), 0u);
-    }
-  } else {
-    fill_cells(nodes);
-  }
-  edge_start_.resize(nodes);
-  out_edge_.resize(nodes);
-  for (std::uint32_t v = 0; v < nodes; ++v) edge_start_[v] = out_edge_[v] = v;
-  node_merged_.assign(nodes, 0);
-  edge_merged_.assign(nodes, 0);
-}
-
-/// The nodes' and edges' cells by counting: (cell, item) pairs listed once, cells counted,
-/// offsets summed, then filled.
-void HoleBridger::fill_cells(std::uint32_t nodes) {
-  const std::size_t cells = frame_.cell_count();
-  const auto fill = [&](CellLists& lists) {
-    lists.start.assign(cells + 1, 0);
-    lists.head.assign(cells, UINT32_MAX);
-    lists.added.clear();
-    for (const auto& [cell, item] : pairs_) ++lists.start[cell + 1];
-    for (std::size_t c = 0; c < cells; ++c) lists.start[c + 1] += lists.start[c];
-    lists.items.resize(pairs_.size());
-    for (const auto& [cell, item] : pairs_) lists.items[lists.start[cell]++] = item;
-    // Each start[c] now is where cell c ends: shift back by one cell.
-    for (std::size_t c = cells; c > 0; --c) lists.start[c] = lists.start[c - 1];
-    lists.start[0] = 0;
+/// holes_ by leftmost vertex (ties by node: the order the holes join in), then every node's
+/// and edge's rank.
+void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx, bool parallel) {
+  const std::size_t holes = polygon.ring_count() - 1;
+  holes_.resize(holes);
+  const auto leftmost = [&](std::size_t k) {
+    const std::uint32_t first = polygon.ring_starts[k + 1], end = polygon.ring_starts[k + 2];
+    std::uint32_t best = first;  // the ring is still the contiguous cycle first..end - 1
+    for (std::uint32_t v = first + 1; v < end; ++v)
+      if (lexicographic_less(b_->pos[v], b_->pos[best])) best = v;
+    holes_[k] = {best, static_cast<std::uint32_t>(k + 1)};
   };
-  pairs_.clear();
-  for (std::uint32_t v = 0; v < nodes; ++v)
-    pairs_.push_back({static_cast<std::uint32_t>(
-                          frame_.cell(frame_.column(b_->pos[v].x), frame_.row(b_->pos[v].y))),
-                      v});
-  fill(node_cells_);
-  pairs_.clear();
-  for (std::uint32_t v = 0; v < nodes; ++v)
-    frame_.for_each_cell_on_segment(b_->pos[v], b_->pos[b_->next[v]], [&](std::size_t cell) {
-      pairs_.push_back({static_cast<std::uint32_t>(cell), v});
+  if (parallel) {
+    const std::size_t tasks = std::min<std::size_t>(holes, ctx.partitions * tasks_per_part);
+    ctx.run_tasks("bridge: leftmost vertices", tasks, [&](std::size_t t) {
+      for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k) leftmost(k);
     });
-  fill(edge_cells_);
+  } else {
+    for (std::size_t k = 0; k < holes; ++k) leftmost(k);
+  }
+  const auto order = [&] {
+    std::sort(holes_.begin(), holes_.end(), [&](const Hole& a, const Hole& c) {
+      const Point &p = b_->pos[a.leftmost], &q = b_->pos[c.leftmost];
+      return lexicographic_less(p, q) || (p == q && a.leftmost < c.leftmost);
+    });
+    assign_ranks(polygon);
+  };
+  if (parallel)
+    ctx.run_serial("bridge: order holes", order);
+  else
+    order();
 }
 
-std::uint32_t HoleBridger::leftmost_node(std::uint32_t first) const {
-  std::uint32_t best = first;
-  for (std::uint32_t v = b_->next[first]; v != first; v = b_->next[v])
-    if (lexicographic_less(b_->pos[v], b_->pos[best])) best = v;
-  return best;
+void HoleBridger::assign_ranks(const CleanPolygon& polygon) {
+  rank_.resize(polygon.points.size());
+  std::fill(rank_.begin(), rank_.begin() + polygon.ring_starts[1], 0u);
+  for (std::size_t k = 0; k < holes_.size(); ++k) {
+    const std::uint32_t ring = holes_[k].ring;
+    std::fill(rank_.begin() + polygon.ring_starts[ring],
+              rank_.begin() + polygon.ring_starts[ring + 1], static_cast<std::uint32_t>(k + 1));
+  }
+}
+
+/// Every hole's attachment against the rings ranked below it, as tasks: each reads the grid,
+/// the boundary and the ranks, and writes its own entries of found_.
+void HoleBridger::find_all(const RunContext& ctx) {
+  const std::size_t holes = holes_.size();
+  found_.resize(holes);
+  const std::size_t tasks = std::min<std::size_t>(holes, ctx.partitions * tasks_per_part);
+  ctx.run_tasks("bridge: find attachments", tasks, [&](std::size_t t) {
+    for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k)
+      found_[k] = find(holes_[k].leftmost, static_cast<std::uint32_t>(k + 1));
+  });
+}
+
+/// Joins the holes in rank order. A hole found in parallel keeps what was found unless the
+/// serial search would now see something else: a bridge added since crossing its ray at or
+/// before the edge it hit (bridges add no node positions, so the visible vertex depends only
+/// on that edge), or a splice that moved edge ids or left a ring out.
+void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel,
+                             std::vector<std::uint32_t>& unjoined) {
+  bool stale = false;  // found_ was computed with a ring that is now left out
+  for (std::size_t k = 0; k < holes_.size(); ++k) {
+    const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
+    Attachment at;
+    if (!found_in_parallel) {
+      at = find(hole, rank);
+    } else {
+      at = found_[k];
+      if (stale || edges_split_ || at.hit.touching_edge != UINT32_MAX ||
+          (!at.touches && crossed_by_bridge(b_->pos[hole], at.hit))) {
+        at = find(hole, rank);
+        ++redone_;
+      }
+    }
+    // Nothing to the left: the hole lies outside the outer ring. A target the splice could
+    // not find (no merged node there: the search and the splice disagree) is found again
+    // serially rather than trusted, and a hole is never spliced blindly.
+    bool joined = attach(hole, at, rank);
+    if (!joined && found_in_parallel) {
+      ++redone_;
+      joined = attach(hole, find(hole, rank), rank);
+    }
+    if (!joined) {
+      unjoined.push_back(hole);
+      leave_out(polygon, holes_[k].ring);
+      stale = true;
+    }
+  }
+}
+
+HoleBridger::Attachment HoleBridger::find(std::uint32_t hole, std::uint32_t rank) const {
+  Attachment at;
+  const Point h = b_->pos[hole];
+  at.touches = node_at(h, b_->pos[b_->next[hole]], rank) != UINT32_MAX;
+  if (at.touches) return at;
+  at.hit = cast_left(h, rank);
+  if (at.hit.touching_edge == UINT32_MAX && at.hit.edge != UINT32_MAX)
+    at.target = visible_target(h, at.hit, rank);
+  return at;
+}
+
+/// Whether a bridge (an added edge) crosses the ray from h where the serial search would meet
+/// it: at or right of the edge the search hit, in the cells that search reads.
+bool HoleBridger::crossed_by_bridge(const Point& h, const RayHit& hit) const {
+  if (edge_cells_.added.empty()) return false;
+  const int row = frame_.row(h.y);
+  bool crossed = false;
+  for (int col = frame_.column(h.x); col >= 0 && !crossed; --col) {
+    const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
+    if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
+    edge_cells_.for_each_added(frame_.cell(col, row), [&](std::uint32_t id) {
+      const std::uint32_t s = edge_start_[id];
+      Point lo = b_->pos[s], hi = b_->pos[b_->next[s]];
+      if (crossed || lo.y == hi.y) return;
+      if (lo.y > hi.y) std::swap(lo, hi);
+      double x = 0;
+      const Crossing c = ray_crossing(h, lo, hi, x);
+      if (c == Crossing::through || (c == Crossing::left && (hit.edge == UINT32_MAX || x >= hit.x)))
+        crossed = true;
+    });
+  }
+  return crossed;
+}
+
+/// Splices the hole where `at` says; false (nothing changed) if the ray hit nothing or no
+/// merged node is at the target.
+bool HoleBridger::attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank) {
+  const Point h = b_->pos[hole];
+  if (!at.touches && at.hit.touching_edge != UINT32_MAX) {
+    splice_into_edge(at.hit.touching_edge, hole);
+    return true;
+  }
+  if (!at.touches && at.hit.edge == UINT32_MAX) return false;
+  const std::uint32_t target =
+      at.touches ? node_at(h, b_->pos[b_->next[hole]], rank) : node_at(at.target, h, rank);
+  if (target == UINT32_MAX) return false;
+  if (at.touches)
+    splice_touching(target, hole);
+  else
+    splice_bridge(target, hole);
+  return true;
+}
+
+/// A hole that could not be joined never counts for the holes after it.
+void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
+  std::fill(rank_.begin() + polygon.ring_starts[ring],
+            rank_.begin() + polygon.ring_starts[ring + 1], UINT32_MAX);
 }
 
 /// A node a bridge adds (a copy): merged at once.
 void HoleBridger::insert_node(std::uint32_t node) {
   const Point& p = b_->pos[node];
   node_cells_.add(frame_.cell(frame_.column(p.x), frame_.row(p.y)), node);
-  if (node_merged_.size() <= node) node_merged_.resize(node + 1, 0);
-  node_merged_[node] = 1;
+  if (rank_.size() <= node) rank_.resize(node + 1, 0);
 }
 
 /// An edge a bridge adds, from `start`: a new id, merged at once.
 std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
   const auto id = static_cast<std::uint32_t>(edge_start_.size());
   edge_start_.push_back(start);
-  edge_merged_.push_back(1);
+  if (rank_.size() <= id) rank_.resize(id + 1, 0);
   if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
   frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]],
@@ -132,29 +214,19 @@ std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
   return id;
 }
 
-/// The ring through `first` joins the boundary: its nodes and edges count from now on.
-void HoleBridger::merge_ring(std::uint32_t first) {
-  std::uint32_t v = first;
-  do {
-    node_merged_[v] = 1;
-    edge_merged_[v] = 1;
-    v = b_->next[v];
-  } while (v != first);
-}
-
 /// The merged node at exactly p whose interior sector contains `towards`; UINT32_MAX if no
 /// merged node lies at p. Falls back to any node at p when no sector contains it strictly.
-std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards) const {
+std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards, std::uint32_t rank) const {
   std::uint32_t any = UINT32_MAX, inside = UINT32_MAX;
   node_cells_.for_each(frame_.cell(frame_.column(p.x), frame_.row(p.y)), [&](std::uint32_t node) {
-    if (inside != UINT32_MAX || !node_merged_[node] || !(b_->pos[node] == p)) return;
+    if (inside != UINT32_MAX || !merged(node, rank) || !(b_->pos[node] == p)) return;
     if (b_->sector_contains(node, towards)) inside = node;
     if (any == UINT32_MAX) any = node;
   });
   return inside != UINT32_MAX ? inside : any;
 }
 
-HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
+HoleBridger::RayHit HoleBridger::cast_left(const Point& h, std::uint32_t rank) const {
   RayHit hit;
   hit.x = -std::numeric_limits<double>::infinity();
   const int row = frame_.row(h.y);
@@ -162,22 +234,15 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
     const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
     if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
     edge_cells_.for_each(frame_.cell(col, row), [&](std::uint32_t id) {
-      if (!edge_merged_[id]) return;
+      if (!merged(id, rank)) return;
       const std::uint32_t s = edge_start_[id];
       Point lo = b_->pos[s], hi = b_->pos[b_->next[s]];
       if (lo.y == hi.y) return;  // horizontal: its endpoints end other edges
       if (lo.y > hi.y) std::swap(lo, hi);
-      if (h.y < lo.y || h.y > hi.y) return;
-      const double side = orient2d(lo, hi, h);
-      if (side > 0) return;  // the edge lies to the right of h
-      if (side == 0) {
-        if (!(h == lo) && !(h == hi)) hit.touching_edge = id;
-        return;
-      }
-      const double x = h.y == lo.y   ? lo.x
-                       : h.y == hi.y ? hi.x
-                                     : lo.x + (h.y - lo.y) * (hi.x - lo.x) / (hi.y - lo.y);
-      if (x > hit.x || (x == hit.x && id < hit.edge)) {
+      double x = 0;
+      const Crossing c = ray_crossing(h, lo, hi, x);
+      if (c == Crossing::through) hit.touching_edge = id;
+      if (c == Crossing::left && (x > hit.x || (x == hit.x && id < hit.edge))) {
         hit.x = std::min(x, h.x);
         hit.edge = id;
       }
@@ -185,11 +250,10 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h) const {
   }
   return hit;
 }
-
 /// Eberly's method: an endpoint M of the hit edge, unless vertices lie in the triangle
 /// (h, crossing, M); then the one seen at the smallest angle from the ray (nearest on ties).
 /// Every decision is an exact orientation or comparison; the crossing x only bounds the search.
-Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
+Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32_t rank) const {
   const std::uint32_t s = edge_start_[hit.edge];
   const Point a = b_->pos[s], c = b_->pos[b_->next[s]];
   if (a.y == h.y && a.x <= h.x) return a;
@@ -211,7 +275,7 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit) const {
   for (int r = r0; r <= r1; ++r) {
     for (int col = c0; col <= c1; ++col) {
       node_cells_.for_each(frame_.cell(col, r), [&](std::uint32_t node) {
-        if (!node_merged_[node]) return;
+        if (!merged(node, rank)) return;
         const Point& v = b_->pos[node];
         if (v == h || v.x > h.x || (v.y - h.y) * up < 0 || (v.y - m.y) * up > 0) return;
         const double es = orient2d(a, c, v);
@@ -269,6 +333,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   out_edge_[hole] = UINT32_MAX;
   insert_node(entry);
   insert_edge(hole);
+  edges_split_ = true;  // edge `edge` is shorter now: what the parallel search saw of it is stale
 }
 
 }  // namespace pear::detail

@@ -14,25 +14,48 @@ namespace pear::detail {
 /// Joins the holes one by one, in order of their leftmost vertex, each to a vertex visible to
 /// the left of it (Eberly's ray method). Rays and visibility run on a uniform grid of the
 /// merged edges and nodes, so the cost stays near-linear with 100,000 holes (with few holes,
-/// one cell: scans). Every ring's
-/// nodes and edges enter the grid at once, in arrays filled by counting (no allocation per
-/// cell); a hole's only count once it is merged, and the few nodes and edges that bridges add
-/// go to per-cell lists beside them.
+/// one cell: scans). Every ring's nodes and edges enter the grid at once, in arrays filled by
+/// counting (no allocation per cell); each carries the rank at which it joins the boundary
+/// (outer ring 0, the k-th hole in order k), so a hole of rank k sees exactly the rings ranked
+/// below it, and the few nodes and edges that bridges add go to per-cell lists beside them.
+///
+/// In parallel (docs/parallel.md, "Bridges"): every hole's ray and visible vertex are found at
+/// once, as tasks, against the rings ranked below it; then, in order, each hole is spliced,
+/// after a check that no bridge added before it crosses its ray nearer than what it hit (the
+/// only way the serial result could differ; then it is found again). The triangles are the
+/// same as the serial joining's, whatever the threads or parts.
 class HoleBridger {
  public:
   /// Up to this many holes the grid is one cell: each hole scans every edge and node.
   static constexpr std::size_t few_holes = 4;
+  /// In parts, each phase has this many tasks per part: more tasks than threads even out
+  /// holes whose rays run far and bands of the grid that hold more edges.
+  static constexpr std::size_t tasks_per_part = 4;
 
   /// `boundary` holds one node per clean vertex, each ring already linked as a cycle.
   /// Returns the leftmost node of every hole it could not join (nothing lies to its left: the
-  /// hole is outside the outer ring, so the input is not a valid polygon).
-  std::vector<std::uint32_t> join(const CleanPolygon& polygon, Boundary& boundary);
+  /// hole is outside the outer ring, so the input is not a valid polygon). `in_parts`: the
+  /// caller runs in parts (ctx.partitions > 1, a parallel run): with more than `few_holes`
+  /// holes the search then runs as ctx's tasks, ctx.partitions x 4 of them; every phase is
+  /// recorded in ctx's profile.
+  std::vector<std::uint32_t> join(const CleanPolygon& polygon, Boundary& boundary,
+                                  const RunContext& ctx = RunContext{}, bool in_parts = false);
+
+  /// Holes whose attachment the parallel search found and the splice had to find again (an
+  /// earlier bridge crossed its ray): for tests and the profile's notes.
+  std::size_t redone() const { return redone_; }
 
  private:
   struct RayHit {
     std::uint32_t edge = UINT32_MAX;           ///< nearest edge crossed left of the hole, or none
     double x = 0;                              ///< where it crosses (for ranking only)
     std::uint32_t touching_edge = UINT32_MAX;  ///< an edge passing exactly through the hole vertex
+  };
+  /// Where a hole attaches, as seen from its leftmost vertex.
+  struct Attachment {
+    bool touches = false;  ///< a merged node lies at the hole's vertex
+    RayHit hit;
+    Point target;  ///< the visible vertex, when the ray hit an edge
   };
 
   /// The grid's contents: the nodes and edges of every ring (ids: the ring's node numbers,
@@ -44,6 +67,10 @@ class HoleBridger {
     template <class Visit>
     void for_each(std::size_t cell, Visit&& visit) const {
       for (std::uint32_t i = start[cell]; i < start[cell + 1]; ++i) visit(items[i]);
+      for_each_added(cell, visit);
+    }
+    template <class Visit>
+    void for_each_added(std::size_t cell, Visit&& visit) const {
       for (std::uint32_t a = head[cell]; a != UINT32_MAX; a = added[a].second)
         visit(added[a].first);
     }
@@ -52,16 +79,35 @@ class HoleBridger {
       head[cell] = static_cast<std::uint32_t>(added.size() - 1);
     }
   };
+  struct Hole {
+    std::uint32_t leftmost, ring;
+  };
+  /// The parallel grid build's scratch, per chunk of item ids: its (cell, item) pairs and how
+  /// many fall in each band of cells (then where the band's pairs of this chunk go).
+  struct GridChunk {
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::vector<std::uint32_t> in_band;
+  };
 
-  void build_grid(std::uint32_t nodes);
+  void order_holes(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
+  void build_grid(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void fill_cells(std::uint32_t nodes);
-  void merge_ring(std::uint32_t first_node);
+  void build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx);
+  void sort_band(CellLists& lists, std::size_t list, std::size_t band, std::size_t per_band);
+  void assign_ranks(const CleanPolygon& polygon);
+  void find_all(const RunContext& ctx);
+  void splice_all(const CleanPolygon& polygon, bool found_in_parallel,
+                  std::vector<std::uint32_t>& unjoined);
+  bool merged(std::uint32_t item, std::uint32_t rank) const { return rank_[item] < rank; }
+  Attachment find(std::uint32_t hole, std::uint32_t rank) const;
+  bool crossed_by_bridge(const Point& h, const RayHit& hit) const;
+  bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank);
+  void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
   void insert_node(std::uint32_t node);
   std::uint32_t insert_edge(std::uint32_t start);
-  std::uint32_t leftmost_node(std::uint32_t first_node) const;
-  std::uint32_t node_at(const Point& p, const Point& towards) const;
-  RayHit cast_left(const Point& h) const;
-  Point visible_target(const Point& h, const RayHit& hit) const;
+  std::uint32_t node_at(const Point& p, const Point& towards, std::uint32_t rank) const;
+  RayHit cast_left(const Point& h, std::uint32_t rank) const;
+  Point visible_target(const Point& h, const RayHit& hit, std::uint32_t rank) const;
   void splice_bridge(std::uint32_t target, std::uint32_t hole);
   void splice_touching(std::uint32_t target, std::uint32_t hole);
   void splice_into_edge(std::uint32_t edge, std::uint32_t hole);
@@ -69,11 +115,20 @@ class HoleBridger {
   Boundary* b_ = nullptr;
   GridFrame frame_;
   CellLists node_cells_, edge_cells_;
-  std::vector<std::uint8_t> node_merged_, edge_merged_;  ///< on the joined boundary yet
+  /// Node or edge id -> the rank of its ring (a ring joins when the hole ranked next is
+  /// searched), 0 for what bridges add, never (UINT32_MAX) for a hole that could not be joined.
+  std::vector<std::uint32_t> rank_;
   std::vector<std::uint32_t> edge_start_;  ///< edge id -> start node (its end is next[start])
   std::vector<std::uint32_t> out_edge_;    ///< node -> id of the edge leaving it
-  std::vector<std::uint32_t> order_;
+  std::vector<Hole> holes_;                ///< by leftmost vertex: hole k - 1 has rank k
+  std::vector<Attachment> found_;          ///< the parallel search's result per hole
   std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  ///< {cell, item}: build_grid
+  std::vector<GridChunk> grid_chunks_;  ///< in parts: the nodes' chunks, then the edges'
+  /// In parts, per list (nodes, edges): its pairs by band, and where each band starts.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> by_band_[2];
+  std::vector<std::uint32_t> band_start_[2];
+  bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
+  std::size_t redone_ = 0;
 };
 
 }  // namespace pear::detail

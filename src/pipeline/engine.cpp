@@ -94,23 +94,44 @@ std::optional<std::uint32_t> Engine::split_t_junctions(const RunContext& ctx,
   return simplicity_.find_violation(clean_, ctx);
 }
 
-std::vector<std::uint32_t> Engine::bridge_holes() {
+std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx) {
+  // In parts when the run is (the parallel variants, or automatic on a large polygon): the
+  // same bridges either way, so the threads never change the triangles.
+  const std::size_t n = clean_.points.size();
+  const bool in_parts = ctx.partitions > 1 && n >= parallel_threshold;
   // One node per clean vertex, each ring a cycle: copied and linked in whole arrays (a county
   // is a few dozen nodes, and this is a tenth of its run if done node by node).
-  const std::size_t n = clean_.points.size();
-  boundary_.pos.assign(clean_.points.begin(), clean_.points.end());
-  boundary_.vertex.assign(clean_.original.begin(), clean_.original.end());
+  if (in_parts) {
+    boundary_.pos.resize(n);
+    boundary_.vertex.resize(n);
+  } else {
+    boundary_.pos.assign(clean_.points.begin(), clean_.points.end());
+    boundary_.vertex.assign(clean_.original.begin(), clean_.original.end());
+  }
   boundary_.prev.resize(n);
   boundary_.next.resize(n);
   std::uint32_t* prev = boundary_.prev.data();
   std::uint32_t* next = boundary_.next.data();
+  if (in_parts) {
+    const std::size_t tasks = ctx.partitions;
+    ctx.run_tasks("bridge: boundary", tasks, [&](std::size_t t) {
+      const auto first = static_cast<std::uint32_t>(n * t / tasks);
+      const auto end = static_cast<std::uint32_t>(n * (t + 1) / tasks);
+      std::copy(clean_.points.begin() + first, clean_.points.begin() + end,
+                boundary_.pos.begin() + first);
+      std::copy(clean_.original.begin() + first, clean_.original.begin() + end,
+                boundary_.vertex.begin() + first);
+      for (std::uint32_t i = first; i < end; ++i) prev[i] = i - 1, next[i] = i + 1;
+    });
+  }
   for (std::size_t r = 0; r < clean_.ring_count(); ++r) {
     const std::uint32_t first = clean_.ring_starts[r], last = clean_.ring_starts[r + 1] - 1;
-    for (std::uint32_t i = first; i <= last; ++i) prev[i] = i - 1, next[i] = i + 1;
+    if (!in_parts)
+      for (std::uint32_t i = first; i <= last; ++i) prev[i] = i - 1, next[i] = i + 1;
     prev[first] = last;
     next[last] = first;
   }
-  return bridger_.join(clean_, boundary_);
+  return bridger_.join(clean_, boundary_, ctx, in_parts);
 }
 
 void Engine::bridge(bool checked, const RunContext& ctx) {
@@ -120,8 +141,9 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
   const bool touching = verdict_.touching != Verdict::Touching::no;
   std::vector<std::uint32_t> unjoined;
   std::uint32_t overlapping = UINT32_MAX;
-  ctx.run_serial("bridge holes", [&] {
-    unjoined = bridge_holes();
+  // The bridger records its own phases: with many holes and parts, its searches are tasks.
+  unjoined = bridge_holes(ctx);
+  ctx.run_serial("bridge: touching points", [&] {
     if (touching) {
       overlapping = touching_.untangle(boundary_);
       cycles_ = touching_.cycles(boundary_, 0, unjoined);

@@ -59,7 +59,7 @@ class Engine {
   void bridge(bool checked, const RunContext& ctx);
   /// boundary_ from clean_'s rings; returns the leftmost node of every hole that could not be
   /// joined.
-  std::vector<std::uint32_t> bridge_holes();
+  std::vector<std::uint32_t> bridge_holes(const RunContext& ctx);
   /// After untangling: whether a hole passes one of its points twice.
   bool hole_touches_itself();
   /// Clips every cycle with `algorithm`; false when a best-effort fallback acted.

@@ -1,0 +1,243 @@
+// Hole bridging in parts (src/earclip/bridge.cpp): every hole's ray and visible vertex found as
+// parallel tasks, then spliced in order. On polygons built to hit its hard cases (rays that hit
+// other holes, bridges that cross a later hole's ray, holes that share a target vertex, touch
+// the shell or lie on its edges, leftmost vertices on one line, chains, a hole outside the
+// shell) the bridged boundary must be the serial joining's, node for node, at 1, 2, 3 and 8
+// threads and 2, 3 and 16 parts; one cycle through every node; no two of its edges crossing.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "clean/clean.hpp"
+#include "earclip/bridge.hpp"
+#include "pear/generate.hpp"
+#include "pear/pear.hpp"
+#include "pipeline/threading.hpp"
+
+namespace pear::detail {
+namespace {
+
+CleanPolygon cleaned(const Polygon& polygon) {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> offsets{0};
+  for (const Ring& ring : polygon) {
+    points.insert(points.end(), ring.begin(), ring.end());
+    offsets.push_back(static_cast<std::uint32_t>(points.size()));
+  }
+  CleanPolygon clean;
+  std::vector<Diagnostic> diagnostics;
+  EXPECT_EQ(clean_polygon(InputPolygon(PolygonView{points, offsets}), clean, diagnostics),
+            Status::ok);
+  return clean;
+}
+
+struct Bridged {
+  Boundary boundary;
+  std::vector<std::uint32_t> unjoined;
+  std::size_t redone = 0;
+};
+
+Bridged bridge(const CleanPolygon& clean, const RunContext& ctx, bool in_parts) {
+  Bridged out;
+  Boundary& b = out.boundary;
+  for (std::size_t r = 0; r < clean.ring_count(); ++r) {
+    const std::uint32_t first = clean.ring_starts[r], last = clean.ring_starts[r + 1] - 1;
+    for (std::uint32_t i = first; i <= last; ++i) b.add(clean.points[i], clean.original[i]);
+    for (std::uint32_t i = first; i < last; ++i) b.link(i, i + 1);
+    b.link(last, first);
+  }
+  HoleBridger bridger;
+  out.unjoined = bridger.join(clean, b, ctx, in_parts);
+  out.redone = bridger.redone();
+  return out;
+}
+
+/// Proper crossings between edges of the boundary (exact signs; shared ends and touching
+/// are allowed, as on any weakly simple boundary).
+std::size_t crossing_edges(const Boundary& b) {
+  std::size_t crossings = 0;
+  for (std::uint32_t u = 0; u < b.size(); ++u) {
+    const Point &a = b.pos[u], &c = b.pos[b.next[u]];
+    for (std::uint32_t v = u + 1; v < b.size(); ++v) {
+      const Point &p = b.pos[v], &q = b.pos[b.next[v]];
+      const double s1 = orient2d(a, c, p), s2 = orient2d(a, c, q);
+      const double s3 = orient2d(p, q, a), s4 = orient2d(p, q, c);
+      if (((s1 > 0 && s2 < 0) || (s1 < 0 && s2 > 0)) && ((s3 > 0 && s4 < 0) || (s3 < 0 && s4 > 0)))
+        ++crossings;
+    }
+  }
+  return crossings;
+}
+
+std::size_t cycle_length(const Boundary& b, std::uint32_t v) {
+  std::size_t n = 0;
+  std::uint32_t u = v;
+  do {
+    ++n;
+    u = b.next[u];
+  } while (u != v && n <= b.size());
+  return n;
+}
+
+/// The serial joining is valid (one cycle, no crossing edges) and the joining in parts is the
+/// same at every thread and part count. Returns the most holes any run in parts had to redo.
+std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = true) {
+  const CleanPolygon clean = cleaned(polygon);
+  const Bridged serial = bridge(clean, RunContext{}, false);
+  if (serial.unjoined.empty()) {
+    EXPECT_EQ(cycle_length(serial.boundary, 0), serial.boundary.size());
+    if (check_crossings) {
+      EXPECT_EQ(crossing_edges(serial.boundary), 0u);
+    }
+  }
+  std::size_t redone = 0;
+  for (unsigned threads : {1u, 2u, 3u, 8u}) {
+    Workers workers;
+    for (std::uint32_t partitions : {2u, 3u, 16u}) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + " partitions " +
+                   std::to_string(partitions));
+      RunProfile profile;
+      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                           .partitions = partitions,
+                           .profile = &profile};
+      const Bridged parts = bridge(clean, ctx, true);
+      EXPECT_EQ(parts.unjoined, serial.unjoined);
+      EXPECT_EQ(parts.boundary.next, serial.boundary.next);
+      EXPECT_EQ(parts.boundary.prev, serial.boundary.prev);
+      EXPECT_EQ(parts.boundary.vertex, serial.boundary.vertex);
+      EXPECT_TRUE(parts.boundary.pos == serial.boundary.pos);
+      redone = std::max(redone, parts.redone);
+      // The search really ran as tasks, as many as the parts ask (or the holes allow).
+      const auto find =
+          std::find_if(profile.phases.begin(), profile.phases.end(),
+                       [](const auto& p) { return p.name == "bridge: find attachments"; });
+      if (clean.ring_count() - 1 > HoleBridger::few_holes) {
+        EXPECT_NE(find, profile.phases.end());
+        if (find == profile.phases.end()) continue;
+        EXPECT_EQ(find->task_seconds.size(),
+                  std::min<std::size_t>(clean.ring_count() - 1,
+                                        partitions * HoleBridger::tasks_per_part));
+      }
+    }
+  }
+  return redone;
+}
+
+Ring square(double x, double y, double side) {
+  return {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
+}
+
+Ring outer(double size) {
+  return square(0, 0, size);
+}
+
+TEST(BridgeInParts, RaysThatHitOtherHoles) {
+  // Rows of holes, each row shifted: a hole's ray hits the hole to its left, or one a row
+  // above or below, or the shell.
+  Polygon polygon{outer(1000)};
+  for (int row = 0; row < 12; ++row)
+    for (int col = 0; col < 12; ++col)
+      polygon.push_back(square(40 + 75.0 * col + 13 * (row % 3), 40 + 75.0 * row, 30));
+  expect_same_in_parts(polygon);
+}
+
+TEST(BridgeInParts, BridgesCrossingLaterRaysAreRedone) {
+  // Holes in a column to the right of a spike of the shell: each one's bridge runs down-left
+  // to the spike's upper base (0, 520), across the rays of the holes above it, and they share
+  // that target. The holes after the first see an earlier bridge nearer than the edge they
+  // hit: the splice finds them again, as the serial joining sees them.
+  Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {0, 520}, {400, 500}, {0, 480}}};
+  for (int k = 0; k < 8; ++k) {
+    const double y = 501 + 2.3 * k;
+    polygon.push_back({{500, y}, {500, y + 1}, {520, y + 1.5}, {520, y - 0.5}});
+  }
+  for (int k = 0; k < 8; ++k) {  // and below the spike, towards (0, 480)
+    const double y = 497 - 2.3 * k;
+    polygon.push_back({{500, y}, {500, y + 1}, {520, y + 1.5}, {520, y - 0.5}});
+  }
+  EXPECT_GT(expect_same_in_parts(polygon), 0u);
+  // Every one of them is bridged to a base of the spike: a copy of it per bridge.
+  const Bridged serial = bridge(cleaned(polygon), RunContext{}, false);
+  const auto at = [&](Point p) {
+    return std::count(serial.boundary.pos.begin(), serial.boundary.pos.end(), p);
+  };
+  EXPECT_EQ(at({0, 520}), 1 + 8);
+  EXPECT_EQ(at({0, 480}), 1 + 8);
+}
+
+TEST(BridgeInParts, RaysThroughTheSpikesTip) {
+  // Leftmost vertices at the tip's height: the rays hit the tip itself, or the hole before.
+  Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {0, 520}, {400, 500}, {0, 480}}};
+  for (int k = 0; k < 10; ++k)
+    polygon.push_back({{450.0 + 40 * k, 500},
+                       {460.0 + 40 * k, 510},
+                       {470.0 + 40 * k, 500},
+                       {460.0 + 40 * k, 490}});
+  expect_same_in_parts(polygon);
+}
+
+TEST(BridgeInParts, LeftmostVerticesOnOneLine) {
+  // Leftmost vertices on one vertical line (ties broken by y) and on one horizontal line, with
+  // holes whose left side is vertical (two leftmost candidates).
+  Polygon polygon{outer(1000)};
+  for (int k = 0; k < 10; ++k) polygon.push_back(square(300, 50 + 90.0 * k, 40));
+  for (int k = 0; k < 6; ++k)
+    polygon.push_back({{500.0 + 70 * k, 480},
+                       {530.0 + 70 * k, 500},
+                       {560.0 + 70 * k, 480},
+                       {530.0 + 70 * k, 460}});
+  expect_same_in_parts(polygon);
+}
+
+TEST(BridgeInParts, HolesTouchingTheShellAndEachOther) {
+  // Holes sharing a vertex with the shell (touching splices), a hole whose leftmost vertex
+  // lies inside a shell edge (the boundary runs through it: edge ids move, so the holes
+  // after it are found again), and a checkerboard of holes touching at corners.
+  Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {0, 700}, {0, 300}}};
+  polygon.push_back({{0, 300}, {40, 280}, {40, 320}});
+  polygon.push_back({{0, 500}, {40, 480}, {40, 520}});  // inside the edge (0, 700)-(0, 300)
+  for (int i = 0; i < 10; ++i)
+    for (int j = 0; j < 10; ++j)
+      if ((i + j) % 2 == 0) polygon.push_back(square(200 + 20.0 * i, 200 + 20.0 * j, 20));
+  expect_same_in_parts(polygon);
+}
+
+TEST(BridgeInParts, ChainsOfHoles) {
+  // Thin holes in a staircase: every ray hits the hole before it, and bridges pile up.
+  Polygon polygon{outer(2000)};
+  for (int k = 0; k < 60; ++k)
+    polygon.push_back({{100.0 + 30 * k, 100.0 + 29 * k},
+                       {110.0 + 30 * k, 140.0 + 29 * k},
+                       {120.0 + 30 * k, 100.0 + 29 * k}});
+  expect_same_in_parts(polygon);
+}
+
+TEST(BridgeInParts, HolesWithNothingToTheirLeftAreLeftOutAndTheRestJoined) {
+  // Not a polygon (the engine's check says so first): one hole outside the shell, one
+  // crossing its left side, both with nothing to the left of their leftmost vertex. The holes
+  // to the right of the crossing one must not see it: the serial joining never merged it.
+  Polygon polygon{outer(1000)};
+  polygon.push_back(square(-500, 700, 100));
+  polygon.push_back({{-100, 400}, {300, 450}, {300, 350}});
+  for (int k = 0; k < 8; ++k) polygon.push_back(square(400 + 60.0 * k, 380, 40));
+  // Seen from (400, 380) across where the crossing hole was: one in front of its right side,
+  // which the search would take, and one behind it at a smaller angle, which the serial
+  // joining takes.
+  polygon.push_back({{330, 370}, {340, 372}, {340, 368}});
+  polygon.push_back({{100, 372}, {110, 373}, {110, 371}});
+  const CleanPolygon clean = cleaned(polygon);
+  EXPECT_EQ(bridge(clean, RunContext{}, false).unjoined.size(), 2u);
+  expect_same_in_parts(polygon, false);
+}
+
+TEST(BridgeInParts, GeneratedFamilies) {
+  for (const char* kind : {"holes", "random-holes"})
+    for (std::uint64_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
+      expect_same_in_parts(generate_polygon(kind, 1500, seed));
+    }
+}
+
+}  // namespace
+}  // namespace pear::detail
