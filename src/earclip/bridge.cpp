@@ -12,7 +12,10 @@ namespace {
 /// only ranks the crossings.
 enum class Crossing { none, left, through };
 
-Crossing ray_crossing(const Point& h, const Point& lo, const Point& hi, double& x) {
+/// Inlined: the ray scan calls it for every edge in the cells it reads (callgrind: 20% more
+/// instructions in the scan as a call).
+[[gnu::always_inline]] inline Crossing ray_crossing(const Point& h, const Point& lo,
+                                                    const Point& hi, double& x) {
   if (h.y < lo.y || h.y > hi.y) return Crossing::none;
   const double side = orient2d(lo, hi, h);
   if (side > 0) return Crossing::none;  // the edge lies to the right of h
@@ -58,7 +61,7 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
     holes_[k] = {best, static_cast<std::uint32_t>(k + 1)};
   };
   if (parallel) {
-    const std::size_t tasks = std::min<std::size_t>(holes, ctx.partitions * tasks_per_part);
+    const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
     ctx.run_tasks("bridge: leftmost vertices", tasks, [&](std::size_t t) {
       for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k) leftmost(k);
     });
@@ -93,7 +96,7 @@ void HoleBridger::assign_ranks(const CleanPolygon& polygon) {
 void HoleBridger::find_all(const RunContext& ctx) {
   const std::size_t holes = holes_.size();
   found_.resize(holes);
-  const std::size_t tasks = std::min<std::size_t>(holes, ctx.partitions * tasks_per_part);
+  const std::size_t tasks = tasks_for(holes, 4, ctx.partitions);
   ctx.run_tasks("bridge: find attachments", tasks, [&](std::size_t t) {
     for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k)
       found_[k] = find(holes_[k].leftmost, static_cast<std::uint32_t>(k + 1));
@@ -199,14 +202,14 @@ void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
 void HoleBridger::insert_node(std::uint32_t node) {
   const Point& p = b_->pos[node];
   node_cells_.add(frame_.cell(frame_.column(p.x), frame_.row(p.y)), node);
-  if (rank_.size() <= node) rank_.resize(node + 1, 0);
+  while (rank_.size() <= node) rank_.push_back(0);  // ids grow one at a time
 }
 
 /// An edge a bridge adds, from `start`: a new id, merged at once.
 std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
   const auto id = static_cast<std::uint32_t>(edge_start_.size());
   edge_start_.push_back(start);
-  if (rank_.size() <= id) rank_.resize(id + 1, 0);
+  while (rank_.size() <= id) rank_.push_back(0);
   if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
   frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]],

@@ -71,7 +71,7 @@ void HoleBridger::fill_cells(std::uint32_t nodes) {
 /// sorted by cell on its own. Stable throughout, so every cell lists its items by id.
 void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx) {
   const auto nodes = static_cast<std::uint32_t>(polygon.points.size());
-  const std::size_t tasks = std::min<std::size_t>(nodes, ctx.partitions * tasks_per_part);
+  const std::size_t tasks = tasks_for(nodes, 4096, ctx.partitions);
   const auto first = [&](std::size_t t) { return static_cast<std::uint32_t>(nodes * t / tasks); };
   std::vector<std::pair<Point, Point>> extents(tasks);
   edge_start_.resize(nodes);

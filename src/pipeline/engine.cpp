@@ -113,7 +113,7 @@ std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx) {
   std::uint32_t* prev = boundary_.prev.data();
   std::uint32_t* next = boundary_.next.data();
   if (in_parts) {
-    const std::size_t tasks = ctx.partitions;
+    const std::size_t tasks = HoleBridger::tasks_for(n, 4096, ctx.partitions);
     ctx.run_tasks("bridge: boundary", tasks, [&](std::size_t t) {
       const auto first = static_cast<std::uint32_t>(n * t / tasks);
       const auto end = static_cast<std::uint32_t>(n * (t + 1) / tasks);

@@ -136,6 +136,37 @@ TEST(Tricky, HolesTouchingAtVerticesAndBridges) {
   check_variants(polygon, true);
 }
 
+TEST(Tricky, ManyHolesBridgedInParts) {
+  // Over 20,000 vertices, so the holes are bridged in parts (src/earclip/bridge.cpp): a shell
+  // with a collinear run along its base and a spike; columns of holes beside the spike whose
+  // bridges cross the rays of the holes above them and share the spike's bases as target;
+  // holes touching the shell and each other at vertices; a staircase chain of holes.
+  Ring shell;
+  for (int i = 0; i < 20000; ++i) shell.push_back({i / 10.0, 0});
+  for (const Point p :
+       {Point{2000, 0}, {2000, 2000}, {0, 2000}, {0, 1040}, {800, 1000}, {0, 960}, {0, 600}})
+    shell.push_back(p);
+  Polygon polygon{shell};
+  for (int k = 0; k < 40; ++k) {
+    const double y = 1001 + 1.2 * k, below = 998 - 1.2 * k;
+    polygon.push_back({{1000, y}, {1000, y + 0.5}, {1040, y + 0.7}, {1040, y - 0.2}});
+    polygon.push_back(
+        {{1000, below}, {1000, below + 0.5}, {1040, below + 0.7}, {1040, below - 0.2}});
+  }
+  polygon.push_back({{0, 600}, {40, 580}, {40, 620}});  // touching the shell at a vertex
+  for (int i = 0; i < 16; ++i)
+    for (int j = 0; j < 16; ++j)
+      if ((i + j) % 2 == 0) {
+        const double x = 100 + 20.0 * i, y = 100 + 20.0 * j;
+        polygon.push_back({{x, y}, {x, y + 20}, {x + 20, y + 20}, {x + 20, y}});
+      }
+  for (int k = 0; k < 30; ++k)
+    polygon.push_back({{1200.0 + 20 * k, 1100.0 + 19 * k},
+                       {1207.0 + 20 * k, 1130.0 + 19 * k},
+                       {1214.0 + 20 * k, 1100.0 + 19 * k}});
+  check_variants(polygon, true);
+}
+
 TEST(Tricky, SelfIntersectingInputIsFlaggedAtEveryThreadCount) {
   Polygon polygon = regular(2000, 0.5, 1);
   std::swap(polygon[0][10], polygon[0][1500]);  // two crossing spikes
