@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/stage.hpp"
 
 namespace pear::detail {
 
@@ -20,7 +21,9 @@ class TouchingPoints {
   /// node (by index) of the first point (in node order) whose edges do not alternate: two
   /// passes' interior wedges overlap there, so the boundary is not weakly simple (a lobe inside
   /// a lobe of the same ring, a hole outside its ring touching it); UINT32_MAX when none.
-  std::uint32_t untangle(Boundary& b);
+  /// In `tasks` > 1 parts (ctx's tasks), the hashing of every node, which is most of the work
+  /// on a large boundary; the same result. Records its phases in ctx's profile.
+  std::uint32_t untangle(Boundary& b, const RunContext& ctx = RunContext{}, std::size_t tasks = 1);
   /// After untangle: 1 for every node whose position another node has (bridge ends, touching
   /// rings), what the clipper calls pinches; it need not hash the positions again.
   const std::vector<std::uint8_t>& shared_positions() const { return shared_; }
@@ -38,9 +41,14 @@ class TouchingPoints {
   };
   /// False when the point's edges do not alternate in and out.
   bool untangle_point(Boundary& b, const std::uint32_t* nodes, std::size_t count);
+  /// order_: the nodes whose hash slot another node shares, in node order.
+  void find_candidates(const Boundary& b, const RunContext& ctx, std::size_t tasks);
+  /// Groups the candidates by position and relinks each point; see untangle().
+  std::uint32_t untangle_points(Boundary& b);
 
   std::vector<std::uint64_t> seen_once_, seen_twice_;  ///< per hash slot: nodes there
-  std::vector<std::uint32_t> order_;        ///< nodes whose hash slot another node shares
+  std::vector<std::uint32_t> order_;  ///< nodes whose hash slot another node shares
+  std::vector<std::vector<std::uint32_t>> chunk_order_;  ///< in parts: order_ per chunk
   std::vector<std::uint32_t> group_slots_;  ///< position -> a candidate there (index in order_)
   std::vector<std::uint32_t> same_;         ///< the next candidate at the same position
   std::vector<std::uint32_t> heads_;        ///< the first candidate at each position

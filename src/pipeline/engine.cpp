@@ -94,11 +94,8 @@ std::optional<std::uint32_t> Engine::split_t_junctions(const RunContext& ctx,
   return simplicity_.find_violation(clean_, ctx);
 }
 
-std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx) {
-  // In parts when the run is (the parallel variants, or automatic on a large polygon): the
-  // same bridges either way, so the threads never change the triangles.
+std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx, bool in_parts) {
   const std::size_t n = clean_.points.size();
-  const bool in_parts = ctx.partitions > 1 && n >= parallel_threshold;
   // One node per clean vertex, each ring a cycle: copied and linked in whole arrays (a county
   // is a few dozen nodes, and this is a tenth of its run if done node by node).
   if (in_parts) {
@@ -139,20 +136,22 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
   // passes through them are in order: nothing to untangle, one cycle, and no repeated position
   // at all without holes.
   const bool touching = verdict_.touching != Verdict::Touching::no;
-  std::vector<std::uint32_t> unjoined;
+  // In parts when the run is (the parallel variants, or automatic on a large polygon): the
+  // same bridges and links either way, so the threads never change the triangles. The bridger
+  // and the untangling record their own phases: in parts, most of their work is tasks.
+  const bool in_parts = ctx.partitions > 1 && clean_.points.size() >= parallel_threshold;
+  const std::vector<std::uint32_t> unjoined = bridge_holes(ctx, in_parts);
   std::uint32_t overlapping = UINT32_MAX;
-  // The bridger records its own phases: with many holes and parts, its searches are tasks.
-  unjoined = bridge_holes(ctx);
-  ctx.run_serial("bridge: touching points", [&] {
-    if (touching) {
-      overlapping = touching_.untangle(boundary_);
-      cycles_ = touching_.cycles(boundary_, 0, unjoined);
-      shared_ = {&touching_.shared_positions(), false};
-    } else {
-      cycles_.assign(1, 0);
-      shared_ = {nullptr, clean_.ring_count() == 1};
-    }
-  });
+  if (touching) {
+    const std::size_t tasks =
+        in_parts ? HoleBridger::tasks_for(boundary_.size(), 4096, ctx.partitions) : 1;
+    overlapping = touching_.untangle(boundary_, ctx, tasks);
+    ctx.run_serial("bridge: cycles", [&] { cycles_ = touching_.cycles(boundary_, 0, unjoined); });
+    shared_ = {&touching_.shared_positions(), false};
+  } else {
+    cycles_.assign(1, 0);
+    shared_ = {nullptr, clean_.ring_count() == 1};
+  }
   // Nothing lies to the left of the hole's leftmost vertex: it is outside the outer ring.
   for (std::uint32_t hole : unjoined) found(Issue::hole_outside_outer_ring, boundary_.vertex[hole]);
   if (found_not_simple()) return;

@@ -57,9 +57,9 @@ class Engine {
   /// boundary_ from clean_'s rings, the holes joined by bridges; the points where it passes
   /// more than once relinked, unless the check found that no two rings touch; cycles_ set.
   void bridge(bool checked, const RunContext& ctx);
-  /// boundary_ from clean_'s rings; returns the leftmost node of every hole that could not be
-  /// joined.
-  std::vector<std::uint32_t> bridge_holes(const RunContext& ctx);
+  /// boundary_ from clean_'s rings, joined by the bridger (in parts: as ctx's tasks); returns
+  /// the leftmost node of every hole that could not be joined.
+  std::vector<std::uint32_t> bridge_holes(const RunContext& ctx, bool in_parts);
   /// After untangling: whether a hole passes one of its points twice.
   bool hole_touches_itself();
   /// Clips every cycle with `algorithm`; false when a best-effort fallback acted.

@@ -4,6 +4,8 @@
 // the shell or lie on its edges, leftmost vertices on one line, chains, a hole outside the
 // shell) the bridged boundary must be the serial joining's, node for node, at 1, 2, 3 and 8
 // threads and 2, 3, 16 and 4,096 parts; one cycle through every node; no two edges crossing.
+// And the untangling of the points it passes twice (src/earclip/touching.cpp) the same with its
+// hashing in parts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 
 #include "clean/clean.hpp"
 #include "earclip/bridge.hpp"
+#include "earclip/touching.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
 #include "pipeline/threading.hpp"
@@ -108,6 +111,14 @@ std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = 
       EXPECT_EQ(parts.boundary.vertex, serial.boundary.vertex);
       EXPECT_TRUE(parts.boundary.pos == serial.boundary.pos);
       redone = std::max(redone, parts.redone);
+      // The points where the boundary passes more than once, untangled with the hashing in
+      // parts: the same links, the same verdict, the same shared positions.
+      Boundary one = serial.boundary, many = serial.boundary;
+      TouchingPoints serial_points, points_in_parts;
+      EXPECT_EQ(points_in_parts.untangle(many, ctx, partitions + 1), serial_points.untangle(one));
+      EXPECT_EQ(many.next, one.next);
+      EXPECT_EQ(many.prev, one.prev);
+      EXPECT_EQ(points_in_parts.shared_positions(), serial_points.shared_positions());
       // The search really ran as tasks, as many as the parts ask (or the holes allow).
       const auto find =
           std::find_if(profile.phases.begin(), profile.phases.end(),
