@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <string>
 
+#include "boundary_support.hpp"
 #include "clean/clean.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/touching.hpp"
@@ -42,14 +43,8 @@ struct Bridged {
 };
 
 Bridged bridge(const CleanPolygon& clean, const RunContext& ctx, bool in_parts) {
-  Bridged out;
+  Bridged out{testing::rings_as_cycles(clean), {}, 0};
   Boundary& b = out.boundary;
-  for (std::size_t r = 0; r < clean.ring_count(); ++r) {
-    const std::uint32_t first = clean.ring_starts[r], last = clean.ring_starts[r + 1] - 1;
-    for (std::uint32_t i = first; i <= last; ++i) b.add(clean.points[i], clean.original[i]);
-    for (std::uint32_t i = first; i < last; ++i) b.link(i, i + 1);
-    b.link(last, first);
-  }
   HoleBridger bridger;
   out.unjoined = bridger.join(clean, b, ctx, in_parts);
   out.redone = bridger.redone();
@@ -73,23 +68,13 @@ std::size_t crossing_edges(const Boundary& b) {
   return crossings;
 }
 
-std::size_t cycle_length(const Boundary& b, std::uint32_t v) {
-  std::size_t n = 0;
-  std::uint32_t u = v;
-  do {
-    ++n;
-    u = b.next[u];
-  } while (u != v && n <= b.size());
-  return n;
-}
-
 /// The serial joining is valid (one cycle, no crossing edges) and the joining in parts is the
 /// same at every thread and part count. Returns the most holes any run in parts had to redo.
 std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = true) {
   const CleanPolygon clean = cleaned(polygon);
   const Bridged serial = bridge(clean, RunContext{}, false);
   if (serial.unjoined.empty()) {
-    EXPECT_EQ(cycle_length(serial.boundary, 0), serial.boundary.size());
+    EXPECT_EQ(testing::cycle_length(serial.boundary, 0), serial.boundary.size());
     if (check_crossings) {
       EXPECT_EQ(crossing_edges(serial.boundary), 0u);
     }
@@ -159,14 +144,11 @@ TEST(BridgeInParts, BridgesCrossingLaterRaysAreRedone) {
   // that target. The holes after the first see an earlier bridge nearer than the edge they
   // hit: the splice finds them again, as the serial joining sees them.
   Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {0, 520}, {400, 500}, {0, 480}}};
-  for (int k = 0; k < 8; ++k) {
-    const double y = 501 + 2.3 * k;
-    polygon.push_back({{500, y}, {500, y + 1}, {520, y + 1.5}, {520, y - 0.5}});
-  }
-  for (int k = 0; k < 8; ++k) {  // and below the spike, towards (0, 480)
-    const double y = 497 - 2.3 * k;
-    polygon.push_back({{500, y}, {500, y + 1}, {520, y + 1.5}, {520, y - 0.5}});
-  }
+  for (const bool above : {true, false})  // and below the spike, towards (0, 480)
+    for (int k = 0; k < 8; ++k) {
+      const double y = above ? 501 + 2.3 * k : 497 - 2.3 * k;
+      polygon.push_back({{500, y}, {500, y + 1}, {520, y + 1.5}, {520, y - 0.5}});
+    }
   EXPECT_GT(expect_same_in_parts(polygon), 0u);
   // Every one of them is bridged to a base of the spike: a copy of it per bridge.
   const Bridged serial = bridge(cleaned(polygon), RunContext{}, false);

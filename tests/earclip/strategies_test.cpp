@@ -11,6 +11,7 @@
 #include <random>
 #include <string>
 
+#include "boundary_support.hpp"
 #include "clean/clean.hpp"
 #include "earclip/bitset_clipper.hpp"
 #include "earclip/bridge.hpp"
@@ -62,27 +63,10 @@ Polygon staircase(int steps) {
 
 /// The boundary of a cleaned polygon, its holes joined by bridges (as the engine builds it).
 Boundary bridged(const CleanPolygon& clean) {
-  Boundary b;
-  for (std::size_t r = 0; r < clean.ring_count(); ++r) {
-    const std::uint32_t first = clean.ring_starts[r], last = clean.ring_starts[r + 1] - 1;
-    for (std::uint32_t i = first; i <= last; ++i) b.add(clean.points[i], clean.original[i]);
-    for (std::uint32_t i = first; i < last; ++i) b.link(i, i + 1);
-    b.link(last, first);
-  }
+  Boundary b = testing::rings_as_cycles(clean);
   HoleBridger bridger;
   EXPECT_TRUE(bridger.join(clean, b).empty());
   return b;
-}
-
-/// The nodes of the cycle through v.
-std::size_t cycle_length(const Boundary& b, std::uint32_t v) {
-  std::size_t n = 0;
-  std::uint32_t u = v;
-  do {
-    ++n;
-    u = b.next[u];
-  } while (u != v && n <= b.size());
-  return n;
 }
 
 void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
@@ -158,7 +142,7 @@ TEST(BitsetClipper, RingsThatAreNotSimpleEndAndLeaveTheRestLinked) {
         ++refused;
         EXPECT_EQ(out[0][0], 7u);
         // One node left the cycle per triangle; the rest is still linked, for the queue.
-        EXPECT_EQ(cycle_length(b, clipper.anchor()), n - (out.size() - 1));
+        EXPECT_EQ(testing::cycle_length(b, clipper.anchor()), n - (out.size() - 1));
       }
     }
   }
