@@ -31,6 +31,7 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   std::vector<std::uint32_t> unjoined;
   redone_ = 0;
   edges_split_ = false;
+  repeated_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
   if (!in_parts || polygon.ring_count() - 1 <= few_holes) {
@@ -295,6 +296,7 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
+  repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
   out_edge_.resize(b.size(), UINT32_MAX);
   const std::uint32_t old_edge = out_edge_[target];
@@ -311,6 +313,7 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
 void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t after_target = b.next[target], after_hole = b.next[hole];
+  repeated_.insert(repeated_.end(), {target, hole});
   b.link(target, after_hole);
   b.link(hole, after_target);
   // `target` now leaves along the hole's first edge, `hole` along target's old edge.
@@ -325,6 +328,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
+  repeated_.insert(repeated_.end(), {hole, entry});
   b.link(start, entry);
   b.link(entry, b.next[hole]);
   b.link(before_hole, hole);

@@ -54,6 +54,9 @@ class HoleBridger {
   /// Holes whose attachment the parallel search found and the splice had to find again (an
   /// earlier bridge crossed its ray): for tests and the profile's notes.
   std::size_t redone() const { return redone_; }
+  /// The nodes the last join left at a position another node has: both ends of every bridge
+  /// and their copies (where no rings touch, the only repeated positions).
+  const std::vector<std::uint32_t>& repeated_nodes() const { return repeated_; }
 
  private:
   struct RayHit {
@@ -139,6 +142,7 @@ class HoleBridger {
   std::vector<std::uint32_t> band_start_[2];
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   std::size_t redone_ = 0;
+  std::vector<std::uint32_t> repeated_;
 };
 
 }  // namespace pear::detail

@@ -151,6 +151,12 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
   } else {
     cycles_.assign(1, 0);
     shared_ = {nullptr, clean_.ring_count() == 1};
+    // The bridges' ends are the repeated positions: marked here, not hashed by the clipper.
+    if (clean_.ring_count() > 1) {
+      bridge_ends_.assign(boundary_.size(), 0);
+      for (std::uint32_t v : bridger_.repeated_nodes()) bridge_ends_[v] = 1;
+      shared_ = {&bridge_ends_, false};
+    }
   }
   // Nothing lies to the left of the hole's leftmost vertex: it is outside the outer ring.
   for (std::uint32_t hole : unjoined) found(Issue::hole_outside_outer_ring, boundary_.vertex[hole]);
