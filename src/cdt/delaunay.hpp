@@ -11,7 +11,10 @@ namespace pear::detail {
 /// points, `points`) into the polygon's constrained Delaunay triangulation. The constraints are
 /// the polygon's ring edges; bridges and other diagonals are not. Runs in parallel when
 /// ctx.parallel(); the result depends on ctx.partitions at most through cocircular ties.
-void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
-                   TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats);
+/// Never inlined into the engine: the WebAssembly build compiles it for size and the engine for
+/// speed (src/meson.build).
+[[gnu::noinline]] void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
+                                     TriangleList& triangles, const RunContext& ctx,
+                                     DelaunayStatistics& stats);
 
 }  // namespace pear::detail

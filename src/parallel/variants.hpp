@@ -12,17 +12,21 @@ namespace pear::detail {
 
 inline constexpr std::uint32_t no_node = UINT32_MAX;
 
+// The variants are never inlined into the engine (its one call site each would take them in
+// whole): the WebAssembly build compiles them for size and the engine for speed (src/meson.build).
+
 /// Paper §2.2: landmarks cut the cycle through `entry` into ctx.partitions chains, each clipped
 /// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
 /// (chain after chain) to `out` and returns a live node of what is left for the sequential
 /// engine to finish, or no_node when nothing is left.
-std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                                const RunContext& ctx, TriangleList& out);
+[[gnu::noinline]] std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry,
+                                                  EarHeuristic heuristic, const RunContext& ctx,
+                                                  TriangleList& out);
 
 /// Paper §2.3: rounds of "mark every second convex node, clip in parallel the marked ones that
 /// are ears" until a round clips few; returns what is left, as partition_and_cut does.
-std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& ctx,
-                           TriangleList& out);
+[[gnu::noinline]] std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry,
+                                             const RunContext& ctx, TriangleList& out);
 
 /// Paper §2.1: splits the polygon bounded by the cycle through `entry` along ctx.partitions - 1
 /// vertical lines, triangulates the parts in parallel, and removes the Steiner points again, so
@@ -30,8 +34,8 @@ std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& c
 /// (the boundary was not weakly simple); best_effort_vertex then names where (caller's index).
 /// The parts, the holes the Steiner points leave and a fallback are clipped by clippers from
 /// `make_clipper` (the sequential engine).
-bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                        MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
-                        std::uint32_t& best_effort_vertex);
+[[gnu::noinline]] bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
+                                          MakeClipper make_clipper, const RunContext& ctx,
+                                          TriangleList& out, std::uint32_t& best_effort_vertex);
 
 }  // namespace pear::detail
