@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
 
@@ -158,7 +160,7 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
         std::upper_bound(offset.begin(), offset.end(), i) - offset.begin() - 1);
     cuts.push_back(keyed(sets[s][i - offset[s]]));
   }
-  std::sort(cuts.begin(), cuts.end());
+  sort(cuts.begin(), cuts.end());
   // By ends alone, so that both half-edges of an edge fall in one range.
   const auto range_of = [&](const KeyedBorder& b) {
     return static_cast<std::size_t>(
@@ -193,7 +195,7 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
   ctx.run_tasks("cdt relink borders: pair", ranges, [&](std::size_t r) {
     const auto first = all.begin() + static_cast<std::ptrdiff_t>(range_start[r]);
     const auto last = all.begin() + static_cast<std::ptrdiff_t>(range_start[r + 1]);
-    std::sort(first, last);
+    sort(first, last);
     for (auto it = first; it + 1 < last; it += 2) {
       mesh.twin[it->h] = (it + 1)->h;
       mesh.twin[(it + 1)->h] = it->h;

@@ -4,6 +4,7 @@
 #include <memory>
 #include <utility>
 
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -170,7 +171,7 @@ BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, std::span<const std::
   for (std::size_t v = 0, from = 0; v < width; from = start[v++]) {
     const auto first = sorted.begin() + from, last = sorted.begin() + start[v];
     if (last - first > 16) {
-      std::sort(first, last);  // a vertex of high degree (a fan)
+      detail::sort(first, last);  // a vertex of high degree (a fan)
       continue;
     }
     for (auto it = first; it != last; ++it)
@@ -189,7 +190,7 @@ bool pair_by_position(Mesh& mesh, const EdgeKeys& keys, std::vector<std::uint32_
   const auto ends = [&](std::uint32_t e) {
     return EdgeEnds(mesh.points[keys.low[e]], mesh.points[keys.high[e]]);
   };
-  std::sort(loose.begin(), loose.end(), [&](std::uint32_t h, std::uint32_t g) {
+  detail::sort(loose.begin(), loose.end(), [&](std::uint32_t h, std::uint32_t g) {
     const EdgeEnds e = ends(h), f = ends(g);
     return e != f ? e < f : h < g;
   });

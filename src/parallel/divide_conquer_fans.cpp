@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
 
@@ -50,7 +52,7 @@ bool FanReducer::fan_path(std::uint32_t s, std::uint32_t count, const TriangleLi
     fan_.push_back(id);
   }
   if (links_.size() < 2) return false;
-  std::sort(links_.begin(), links_.end());
+  detail::sort(links_.begin(), links_.end());
   path_.assign(1, s + 1 == count ? 0 : s + 1);
   for (std::size_t step = 0; step < links_.size(); ++step) {
     const auto it = std::lower_bound(links_.begin(), links_.end(), std::pair{path_.back(), 0u});

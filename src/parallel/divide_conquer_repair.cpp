@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
 
@@ -59,17 +61,17 @@ void SteinerRepair::canonicalize(const Boundary& b, const std::vector<SplitLine>
     corners.push_back(s.to);
   }
   for (const SteinerTriangle& t : triangles) corners.insert(corners.end(), t.begin(), t.end());
-  std::sort(corners.begin(), corners.end());
+  detail::sort(corners.begin(), corners.end());
   corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
   std::vector<std::pair<CornerKey, PieceCorner>> keyed;
   for (PieceCorner c : corners) keyed.push_back({key_of(b, lines, c), c});
-  std::sort(keyed.begin(), keyed.end());
+  detail::sort(keyed.begin(), keyed.end());
   canonical_.clear();
   for (std::size_t i = 0, first = 0; i < keyed.size(); ++i) {
     if (keyed[i].first != keyed[first].first) first = i;
     canonical_.push_back({keyed[i].second, keyed[first].second});
   }
-  std::sort(canonical_.begin(), canonical_.end());
+  detail::sort(canonical_.begin(), canonical_.end());
   triangles_.clear();
   for (const SteinerTriangle& t : triangles)
     triangles_.push_back({canonical(t[0]), canonical(t[1]), canonical(t[2])});
@@ -159,7 +161,7 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
   for (std::uint32_t t = 0; t < triangles.size(); ++t)
     for (std::uint32_t c = 0; c < 3; ++c)
       edges_.push_back({triangles[t][c], triangles[t][(c + 1) % 3], 3 * t + c});
-  std::sort(edges_.begin(), edges_.end(), [](const DirectedEdge& a, const DirectedEdge& b) {
+  detail::sort(edges_.begin(), edges_.end(), [](const DirectedEdge& a, const DirectedEdge& b) {
     return a.from < b.from || (a.from == b.from && a.to < b.to);
   });
   for (std::size_t i = 1; i < edges_.size(); ++i)
@@ -218,7 +220,7 @@ bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>&
   const auto& point = [&](PieceCorner c) -> const SteinerPoint& {
     return lines[corner_line(c)].steiner[corner_index(c)];
   };
-  std::sort(steiner.begin(), steiner.end(), [&](PieceCorner p, PieceCorner q) {
+  detail::sort(steiner.begin(), steiner.end(), [&](PieceCorner p, PieceCorner q) {
     const SteinerPoint &s = point(p), &t = point(q);
     if (s.from != t.from || s.to != t.to)
       return s.from < t.from || (s.from == t.from && s.to < t.to);
@@ -233,7 +235,7 @@ bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>&
     add(first ? PieceCorner{s.from} : steiner[i - 1], steiner[i], 1);
     if (last) add(steiner[i], s.to, 1), add(s.from, s.to, -1);
   }
-  std::sort(uses.begin(), uses.end(), [](const Use& u, const Use& v) {
+  detail::sort(uses.begin(), uses.end(), [](const Use& u, const Use& v) {
     return u.lo < v.lo || (u.lo == v.lo && u.hi < v.hi);
   });
   for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {

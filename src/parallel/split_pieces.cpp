@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
 
@@ -60,8 +62,8 @@ std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner
     low.push_back(std::min(x0, x1));
     high.push_back(std::max(x0, x1));
   }
-  std::sort(low.begin(), low.end());
-  std::sort(high.begin(), high.end());
+  detail::sort(low.begin(), low.end());
+  detail::sort(high.begin(), high.end());
   std::size_t crossings = 0;
   // Edges starting at or before v, less those ending there too.
   for (double v : after)
@@ -81,7 +83,7 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   std::vector<double> xs;
   for (std::size_t i = 0; i < cycle.size(); i += stride)
     xs.push_back(b.pos[corner_index(cycle[i])].x);
-  std::sort(xs.begin(), xs.end());
+  detail::sort(xs.begin(), xs.end());
   const std::size_t budget = max_steiner_points(cycle.size());
   for (; parts >= 2; parts /= 2) {
     std::vector<double> after = quantile_positions(xs, parts);
@@ -148,7 +150,7 @@ bool PieceSplitter::pair_crossings(const std::vector<SplitLine>& lines, std::uin
   };
   order_.resize(count);
   std::iota(order_.begin(), order_.end(), 0u);
-  std::sort(order_.begin(), order_.end(), [&](std::uint32_t i, std::uint32_t j) {
+  detail::sort(order_.begin(), order_.end(), [&](std::uint32_t i, std::uint32_t j) {
     if (y(i) != y(j)) return y(i) < y(j);
     if (crossings_[i].rightward != crossings_[j].rightward) return !crossings_[i].rightward;
     return i < j;

@@ -11,6 +11,7 @@
 #include <numeric>
 #include <utility>
 
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -60,8 +61,8 @@ void join_collinear_at(std::span<const Point> points, std::span<const Residue> r
     const double side = orient2d(at, q, u);
     return upper(q) == upper(u) ? side : -side;
   };
-  std::sort(meeting.begin(), meeting.end(),
-            [&](std::uint32_t r, std::uint32_t s) { return turn(r, s) > 0; });
+  detail::sort(meeting.begin(), meeting.end(),
+               [&](std::uint32_t r, std::uint32_t s) { return turn(r, s) > 0; });
   for (std::size_t i = 1; i < meeting.size(); ++i)
     if (turn(meeting[i - 1], meeting[i]) == 0) runs.join(meeting[i - 1], meeting[i]);
 }
@@ -73,7 +74,7 @@ void check_run(std::span<const Point> points, std::span<const Residue> residues,
   line.clear();
   for (std::uint32_t r : run) line.insert(line.end(), {residues[r].lo, residues[r].hi});
   // Distinct canonical indices are distinct points; on a line, x then y orders them along it.
-  std::sort(line.begin(), line.end(), [&](std::uint32_t a, std::uint32_t b) {
+  detail::sort(line.begin(), line.end(), [&](std::uint32_t a, std::uint32_t b) {
     return lexicographic_less(points[a], points[b]);
   });
   line.erase(std::unique(line.begin(), line.end()), line.end());
@@ -147,7 +148,7 @@ void dissolve_tips(std::span<const Point> points, std::vector<std::uint32_t>& ke
     round.clear();
     for (std::size_t i : suspects)
       if (!gone[i] && turns_back(at(before[i]), at(i), at(after[i]))) round.push_back(i);
-    std::sort(round.begin(), round.end());
+    detail::sort(round.begin(), round.end());
     round.erase(std::unique(round.begin(), round.end()), round.end());
     suspects.clear();
     for (std::size_t i : round) leave(i);
@@ -169,7 +170,7 @@ ResidueBalance balance_residue(std::span<const Point> points, std::span<const Re
     ends.emplace_back(residues[r].lo, r);
     ends.emplace_back(residues[r].hi, r);
   }
-  std::sort(ends.begin(), ends.end());
+  detail::sort(ends.begin(), ends.end());
   Runs runs(count);
   std::vector<std::uint32_t> scratch;
   for (std::size_t i = 0; i < ends.size();) {
@@ -182,7 +183,7 @@ ResidueBalance balance_residue(std::span<const Point> points, std::span<const Re
   }
   std::vector<std::pair<std::uint32_t, std::uint32_t>> by_run;  // (run, residue)
   for (std::uint32_t r = 0; r < count; ++r) by_run.emplace_back(runs.find(r), r);
-  std::sort(by_run.begin(), by_run.end());
+  detail::sort(by_run.begin(), by_run.end());
   std::vector<std::uint32_t> run, line;
   for (std::size_t i = 0; i < by_run.size();) {
     run.clear();

@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "exact_sum.hpp"
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 #include "pear/validate.hpp"
 #include "repairs.hpp"
@@ -255,7 +256,7 @@ void Validator::canonicalize() {
   const auto count = static_cast<std::uint32_t>(points.size());
   std::vector<std::pair<std::uint64_t, std::uint32_t>> hashed(count);
   for (std::uint32_t i = 0; i < count; ++i) hashed[i] = {point_hash(points[i]), i};
-  std::sort(hashed.begin(), hashed.end());
+  detail::sort(hashed.begin(), hashed.end());
   canonical_.resize(count);
   std::vector<std::uint32_t> run;
   for (std::uint32_t i = 0; i < count;) {
@@ -269,7 +270,7 @@ void Validator::canonicalize() {
     // Equal hashes: group by exact coordinates (a collision may mix different points).
     run.clear();
     for (std::uint32_t k = i; k < j; ++k) run.push_back(hashed[k].second);
-    std::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
+    detail::sort(run.begin(), run.end(), [&](std::uint32_t a, std::uint32_t b) {
       const Point& p = points[a];
       const Point& q = points[b];
       if (p.x != q.x) return p.x < q.x;
@@ -403,7 +404,7 @@ void Validator::check_edges() {
     const auto begin = uses.begin() + static_cast<std::ptrdiff_t>(offsets[lo]);
     const auto end = uses.begin() + static_cast<std::ptrdiff_t>(offsets[lo + 1]);
     // Ties by `who` make the messages deterministic.
-    std::sort(begin, end, [](const EdgeUse& a, const EdgeUse& b) {
+    detail::sort(begin, end, [](const EdgeUse& a, const EdgeUse& b) {
       return a.hi != b.hi ? a.hi < b.hi : a.who < b.who;
     });
     for (auto use = begin; use != end;) {
@@ -463,7 +464,7 @@ void Validator::note_self_touching_splits(const std::vector<detail::BoundarySpli
     at.emplace_back(ring_of(unbalanced_[s.residue].boundary_start), s.point);
     split_point[s.point] = 1;
   }
-  std::sort(at.begin(), at.end());
+  detail::sort(at.begin(), at.end());
   self_touching_ = std::adjacent_find(at.begin(), at.end()) != at.end();
   for (std::size_t k = 0; !self_touching_ && k + 1 < boundary_starts_.size(); ++k)
     for (std::uint32_t i = boundary_starts_[k]; i < boundary_starts_[k + 1]; ++i)
@@ -502,7 +503,7 @@ void Validator::report_bad_edge(const EdgeGroup& group) {
     auto vertices = [&](std::uint32_t t) {
       std::array<std::uint32_t, 3> ids;
       for (int k = 0; k < 3; ++k) ids[k] = canonical_[triangles_[t][k]];
-      std::sort(ids.begin(), ids.end());
+      detail::sort(ids.begin(), ids.end());
       return ids;
     };
     if (vertices(same[0].who) == vertices(same[1].who))
