@@ -2,7 +2,9 @@
 # Builds js/pear.wasm: libpear without threads for wasm32-wasi with Debian's clang 14, lld and
 # wasi-libc (js/wasm32-wasi.ini), and the C ABI of js/wasm/exports.cpp.
 #   js/build.sh [--small] [BUILD_DIR]   (default BUILD_DIR: build-wasm at the repository root)
-# -O2 with link-time optimization by default; --small: -Os, 40% smaller and 1.4-1.7x slower.
+# -O2 with link-time optimization by default, the code off the per-polygon path at -Oz
+# (src/meson.build); --small: everything at -Os. Then binaryen's wasm-opt -O2, where installed
+# (scripts/setup.sh installs it): 10% smaller. docs/javascript.md ("Size") has the figures.
 # Exits 77 (a skip to the tests) when the toolchain is not installed (scripts/setup.sh installs it).
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -24,5 +26,12 @@ done
     -Dthreads=disabled -Dtests=disabled -Dbench=disabled -Dfuzz=disabled -Dcli=disabled \
     -Dpython=disabled >/dev/null
 ninja -C "$build" -j"${JOBS:-2}" js/pear.wasm
-cp "$build/js/pear.wasm" js/pear.wasm
+if command -v wasm-opt >/dev/null; then
+  # The features of js/wasm32-wasi.ini: --strip-all dropped the section that lists them.
+  wasm-opt -O2 --enable-simd --enable-nontrapping-float-to-int --enable-bulk-memory \
+    --enable-sign-ext "$build/js/pear.wasm" -o js/pear.wasm
+else
+  echo "js/build.sh: wasm-opt not found (binaryen, scripts/setup.sh): js/pear.wasm not post-optimized"
+  cp "$build/js/pear.wasm" js/pear.wasm
+fi
 echo "js/pear.wasm: $(stat -c %s js/pear.wasm) bytes"

@@ -17,8 +17,10 @@ if [[ "${1:-}" != minimal ]]; then
              python3-shapely python3-geopandas python3-dask python3-distributed
              python3-mapbox-earcut
              python3-mypy                            # stubtest: the type stubs against the module
-             # the JavaScript package (js/): its WebAssembly build and node for its tests
-             clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libclang-rt-14-dev-wasm32 nodejs)
+             # the JavaScript package (js/): its WebAssembly build (binaryen: wasm-opt, 10%
+             # smaller) and node for its tests
+             clang-14 lld-14 wasi-libc libc++-14-dev-wasm32 libclang-rt-14-dev-wasm32 binaryen
+             nodejs)
   # npm fetches earcut.js for the tests; nodejs from nodesource brings its own npm
   command -v npm >/dev/null || packages+=(npm)
 fi
