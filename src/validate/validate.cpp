@@ -24,7 +24,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <limits>
 #include <numeric>
@@ -33,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "decimal.hpp"
 #include "exact_sum.hpp"
 #include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
@@ -581,12 +581,6 @@ void Validator::check_count() {
   });
 }
 
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 void Validator::check_area() {
   report_.polygon_area = polygon_area_.to_double() * 0.5;
   report_.triangle_area = triangle_area_.to_double() * 0.5;
@@ -602,9 +596,9 @@ void Validator::check_area() {
     return fail([] { return std::string("area sums left the exact accumulator's range"); });
   if (sign == 0) return;
   fail([&] {
-    return "total triangle area " + format_number(report_.triangle_area) +
-           " differs from the polygon area " + format_number(report_.polygon_area) +
-           " (relative error " + format_number(report_.area_rel_error) + ")";
+    return "total triangle area " + detail::format_g17(report_.triangle_area) +
+           " differs from the polygon area " + detail::format_g17(report_.polygon_area) +
+           " (relative error " + detail::format_g17(report_.area_rel_error) + ")";
   });
 }
 
