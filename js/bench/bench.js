@@ -3,14 +3,16 @@
 // the median round; then pear's validator on every output of both. docs/benchmarks.md shows
 // the figures.
 //
-//   node bench/bench.js [--rounds 5] [--sets counties,glyphs,...] [--limit N]
+//   node bench/bench.js [--rounds 5] [--sets counties,glyphs,...] [--limit N] [--baseline OLD.wasm]
+// --baseline: another build of pear.wasm (`top`) in the same rounds, for a speed ratio that the
+// load of the machine touches less than two runs' ratios.
 import { readFileSync, existsSync } from 'node:fs';
 import { join } from 'node:path';
 import { gunzipSync } from 'node:zlib';
 
 import earcut from 'earcut';
 
-import { Triangulator, validate } from '../index.js';
+import { createPear, Triangulator, validate } from '../index.js';
 import { geojsonPolygons } from '../test/polygons.js';
 
 const corpus = process.env.PEAR_SHARED_CORPUS ?? new URL('../../../shared/corpus/', import.meta.url).pathname;
@@ -46,6 +48,12 @@ const contenders = {
   'pear fast': (p) => pearFast.triangulate(p.coords, p.holes).triangleCount,
   'pear top': (p) => pearTop.triangulate(p.coords, p.holes).triangleCount,
 };
+const baselineFile = option('baseline', undefined);
+if (baselineFile) {
+  const baseline = createPear(new WebAssembly.Module(readFileSync(baselineFile)));
+  const baselineTop = new baseline.Triangulator();
+  contenders['baseline top'] = (p) => baselineTop.triangulate(p.coords, p.holes).triangleCount;
+}
 
 // CPU seconds for one pass over the polygons (each polygon repeated so a pass takes >= 50 ms).
 function pass(run, polygons, repeat) {
@@ -105,8 +113,9 @@ const rounds = Number(option('rounds', 5));
 const limit = option('limit', undefined) === undefined ? undefined : Number(option('limit'));
 const chosen = option('sets', Object.keys(sets).join(',')).split(',');
 console.log(`node ${process.version}, earcut.js ${JSON.parse(readFileSync(new URL('../node_modules/earcut/package.json', import.meta.url))).version}, ${rounds} rounds (median), CPU time`);
-console.log('| set | polygons | vertices | earcut.js polygons/s | pear fast | pear top | fast / earcut | top / earcut | earcut.js not valid | pear not ok | pear ok, not valid |');
-console.log('|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|');
+const againstBaseline = baselineFile ? ' top / baseline top |' : '';
+console.log('| set | polygons | vertices | earcut.js polygons/s | pear fast | pear top | fast / earcut | top / earcut | earcut.js not valid | pear not ok | pear ok, not valid |' + againstBaseline);
+console.log('|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|' + (baselineFile ? '---:|' : ''));
 for (const name of chosen) {
   const set = sets[name];
   if (!set) throw new Error(`no set '${name}': ${Object.keys(sets).join(', ')}`);
@@ -118,5 +127,6 @@ for (const name of chosen) {
   const [e, f, t] = ['earcut.js', 'pear fast', 'pear top'].map((c) => r.perSecond[c]);
   const v = r.verdicts;
   console.log(`| ${name} | ${r.polygons} | ${r.vertices.toLocaleString('en-US')} | ${format(e)} | ${format(f)} | ${format(t)} | ` +
-    `${(f / e).toFixed(2)}x | ${(t / e).toFixed(2)}x | ${v.earcutInvalid} | ${v.pearNotOk} | ${v.pearOkInvalid} |`);
+    `${(f / e).toFixed(2)}x | ${(t / e).toFixed(2)}x | ${v.earcutInvalid} | ${v.pearNotOk} | ${v.pearOkInvalid} |` +
+    (baselineFile ? ` ${(t / r.perSecond['baseline top']).toFixed(3)}x |` : ''));
 }
