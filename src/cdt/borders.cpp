@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 namespace {
@@ -152,7 +153,8 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
   // Ranges of the sorted order, cut at keys sampled every k-th border (in set order, so the
   // cuts depend on the partitions only): each range is sorted and paired by its own task, and
   // the ranges one after another are the whole order, as one sort would give it.
-  const std::size_t ranges = std::clamp<std::size_t>(total / borders_per_range, 1, 256);
+  const std::size_t ranges =
+      PEAR_HAS_THREADS ? std::clamp<std::size_t>(total / borders_per_range, 1, 256) : 1;
   std::vector<KeyedBorder> cuts;
   for (std::size_t k = 1; k < ranges; ++k) {
     const std::size_t i = k * total / ranges;
@@ -160,7 +162,7 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
         std::upper_bound(offset.begin(), offset.end(), i) - offset.begin() - 1);
     cuts.push_back(keyed(sets[s][i - offset[s]]));
   }
-  sort(cuts.begin(), cuts.end());
+  detail::sort(cuts.begin(), cuts.end());
   // By ends alone, so that both half-edges of an edge fall in one range.
   const auto range_of = [&](const KeyedBorder& b) {
     return static_cast<std::size_t>(
@@ -195,7 +197,7 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
   ctx.run_tasks("cdt relink borders: pair", ranges, [&](std::size_t r) {
     const auto first = all.begin() + static_cast<std::ptrdiff_t>(range_start[r]);
     const auto last = all.begin() + static_cast<std::ptrdiff_t>(range_start[r + 1]);
-    sort(first, last);
+    detail::sort(first, last);
     for (auto it = first; it + 1 < last; it += 2) {
       mesh.twin[it->h] = (it + 1)->h;
       mesh.twin[(it + 1)->h] = it->h;

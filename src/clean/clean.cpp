@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "geometry/segments.hpp"
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -153,7 +154,7 @@ void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, con
   // The first round looks at every point, already in order: only later rounds sort.
   for (bool first_round = true; left >= 3 && !look.empty(); first_round = false) {
     if (!first_round) {
-      std::sort(look.begin(), look.end());
+      detail::sort(look.begin(), look.end());
       look.erase(std::unique(look.begin(), look.end()), look.end());
     }
     tips.clear();

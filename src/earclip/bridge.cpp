@@ -4,6 +4,8 @@
 #include <limits>
 #include <numeric>
 
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
 
@@ -70,7 +72,7 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
     for (std::size_t k = 0; k < holes; ++k) leftmost(k);
   }
   const auto order = [&] {
-    std::sort(holes_.begin(), holes_.end(), [&](const Hole& a, const Hole& c) {
+    detail::sort(holes_.begin(), holes_.end(), [&](const Hole& a, const Hole& c) {
       const Point &p = b_->pos[a.leftmost], &q = b_->pos[c.leftmost];
       return lexicographic_less(p, q) || (p == q && a.leftmost < c.leftmost);
     });

@@ -1,14 +1,25 @@
 #include "touching.hpp"
 
-#include "core/pinches.hpp"
-
 #include <algorithm>
 #include <atomic>
 #include <bit>
 #include <utility>
 
+#include "core/pinches.hpp"
+#include "geometry/sort.hpp"
+
 namespace pear::detail {
 namespace {
+
+/// fetch_or on a word other tasks may set bits in too: std::atomic_ref where the library has
+/// it (libc++ 14, the WebAssembly build's, has not: there the builtin it wraps).
+std::uint64_t fetch_or_relaxed(std::uint64_t& word, std::uint64_t bit) {
+#if defined(__cpp_lib_atomic_ref)
+  return std::atomic_ref(word).fetch_or(bit, std::memory_order_relaxed);
+#else
+  return __atomic_fetch_or(&word, bit, __ATOMIC_RELAXED);
+#endif
+}
 
 /// 0 for directions in [0, 180) degrees, 1 for [180, 360), from exact coordinate comparisons.
 int half(const Point& centre, const Point& to) {
@@ -74,9 +85,8 @@ void TouchingPoints::find_candidates(const Boundary& b, const RunContext& ctx, s
     for (std::uint32_t u = first(t); u < first(t + 1); ++u) {
       const std::size_t s = slot(b.pos[u]);
       const std::uint64_t bit = std::uint64_t{1} << (s % 64);
-      const std::uint64_t seen =
-          std::atomic_ref(seen_once_[s / 64]).fetch_or(bit, std::memory_order_relaxed);
-      if (seen & bit) std::atomic_ref(seen_twice_[s / 64]).fetch_or(bit, std::memory_order_relaxed);
+      if (fetch_or_relaxed(seen_once_[s / 64], bit) & bit)
+        fetch_or_relaxed(seen_twice_[s / 64], bit);
     }
   });
   chunk_order_.resize(tasks);
@@ -125,7 +135,7 @@ std::uint32_t TouchingPoints::untangle_points(Boundary& b) {
       group_.push_back(order_[k]);
       shared_[order_[k]] = 1;
     }
-    std::sort(group_.begin(), group_.end());
+    detail::sort(group_.begin(), group_.end());
     if (!untangle_point(b, group_.data(), group_.size()) && overlapping == UINT32_MAX)
       overlapping = group_[0];
   }
@@ -156,7 +166,7 @@ bool TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std
     if (s.out == t.out) return s.node < t.node;
     return s.node == t.node ? s.out : t.out;
   };
-  std::sort(spokes_.begin(), spokes_.end(), order);
+  detail::sort(spokes_.begin(), spokes_.end(), order);
   const std::size_t n = spokes_.size();
   for (std::size_t i = 0; i < n; ++i)  // not alternating: not a weakly simple crossing point
     if (spokes_[i].out == spokes_[(i + 1) % n].out) return false;

@@ -3,7 +3,9 @@
 #include <algorithm>
 
 #include "cdt/delaunay.hpp"
+#include "geometry/sort.hpp"
 #include "parallel/variants.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 namespace {
@@ -137,9 +139,11 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
   // at all without holes.
   const bool touching = verdict_.touching != Verdict::Touching::no;
   // In parts when the run is (the parallel variants, or automatic on a large polygon): the
-  // same bridges and links either way, so the threads never change the triangles. The bridger
-  // and the untangling record their own phases: in parts, most of their work is tasks.
-  const bool in_parts = ctx.partitions > 1 && clean_.points.size() >= parallel_threshold;
+  // same bridges and links either way, so the threads never change the triangles (and a build
+  // without threads leaves the parts' code out). The bridger and the untangling record their
+  // own phases: in parts, most of their work is tasks.
+  const bool in_parts =
+      PEAR_HAS_THREADS && ctx.partitions > 1 && clean_.points.size() >= parallel_threshold;
   const std::vector<std::uint32_t> unjoined = bridge_holes(ctx, in_parts);
   std::uint32_t overlapping = UINT32_MAX;
   if (touching) {
@@ -190,7 +194,7 @@ bool Engine::hole_touches_itself() {
     while (i >= clean_.ring_starts[ring + 1]) ++ring;
     if (shared[i]) positions_.push_back({clean_.points[i], static_cast<std::uint32_t>(ring)});
   }
-  std::sort(positions_.begin(), positions_.end(), [](const auto& a, const auto& b) {
+  detail::sort(positions_.begin(), positions_.end(), [](const auto& a, const auto& b) {
     return lexicographic_less(a.first, b.first) || (a.first == b.first && a.second < b.second);
   });
   for (std::size_t k = 1; k < positions_.size(); ++k)

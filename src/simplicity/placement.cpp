@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "geometry/sort.hpp"
 #include "geometry/uniform_grid.hpp"
 #include "pear/predicates.hpp"
 #include "simplicity.hpp"
@@ -97,7 +98,7 @@ Witnesses find_witnesses(const CleanPolygon& polygon) {
     if (s.first.y != t.first.y) return s.first.y < t.first.y;
     return s.second < t.second;
   };
-  std::sort(at.begin(), at.end(), less);
+  detail::sort(at.begin(), at.end(), less);
   Witnesses w{std::vector<std::uint8_t>(polygon.points.size(), 1),
               std::vector<std::uint8_t>(polygon.ring_count(), 0)};
   std::vector<std::pair<Point, std::uint32_t>> shared;  // positions of two rings or more

@@ -6,6 +6,7 @@
 
 #include "geometry/box_scan.hpp"
 #include "geometry/segments.hpp"
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -142,7 +143,7 @@ TJunctionSearch SimplicityCheck::find_t_junctions(const CleanPolygon& polygon,
                                                                        : lexicographic_less(q, p);
     return s.vertex < t.vertex;
   };
-  std::sort(found.begin(), found.end(), before);
+  detail::sort(found.begin(), found.end(), before);
   found.erase(std::unique(found.begin(), found.end(),
                           [&](const TJunction& s, const TJunction& t) {
                             return s.edge == t.edge && pts[s.vertex] == pts[t.vertex];
@@ -208,8 +209,8 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
       chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
     }
   }
-  std::sort(chains_.begin(), chains_.end(),
-            [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
+  detail::sort(chains_.begin(), chains_.end(),
+               [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
   return true;
 }
 
@@ -436,8 +437,8 @@ std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon
 /// an end exactly when two vertices share a position: sorted, they are next to each other.
 bool SimplicityCheck::repeats_a_position(const CleanPolygon& polygon) {
   sorted_points_.assign(polygon.points.begin(), polygon.points.end());
-  std::sort(sorted_points_.begin(), sorted_points_.end(),
-            [](const Point& p, const Point& q) { return lexicographic_less(p, q); });
+  detail::sort(sorted_points_.begin(), sorted_points_.end(),
+               [](const Point& p, const Point& q) { return lexicographic_less(p, q); });
   return std::adjacent_find(sorted_points_.begin(), sorted_points_.end()) != sorted_points_.end();
 }
 

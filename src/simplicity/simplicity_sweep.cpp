@@ -9,6 +9,7 @@
 #include <set>
 
 #include "geometry/segments.hpp"
+#include "geometry/sort.hpp"
 #include "pear/predicates.hpp"
 #include "simplicity.hpp"
 
@@ -57,7 +58,7 @@ std::vector<Event> sorted_events(const std::vector<Segment>& segments) {
     events[2 * s] = {segments[s].left, 2 * s};
     events[2 * s + 1] = {segments[s].right, 2 * s + 1};
   }
-  std::sort(events.begin(), events.end(), [](const Event& p, const Event& q) {
+  detail::sort(events.begin(), events.end(), [](const Event& p, const Event& q) {
     if (p.at.x != q.at.x) return p.at.x < q.at.x;
     if (p.at.y != q.at.y) return p.at.y < q.at.y;
     if (p.code % 2 != q.code % 2) return p.code % 2 > q.code % 2;
@@ -129,7 +130,7 @@ std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::
       std::nth_element(left.begin(), at, left.end());
       borders.push_back(*at);
     }
-    std::sort(borders.begin(), borders.end());
+    detail::sort(borders.begin(), borders.end());
     const auto slab_of = [&](double x) {
       return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
                                       borders.begin());

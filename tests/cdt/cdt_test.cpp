@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "pear/config.hpp"
 #include "pear/generate.hpp"
 #include "support.hpp"
 
@@ -129,7 +130,8 @@ TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
       return p.name == "cdt relink borders: pair";
     });
     ASSERT_NE(pair, profile.phases.end());
-    EXPECT_GE(pair->task_seconds.size(), 3u) << "the borders fit one range: nothing tested";
+    EXPECT_GE(pair->task_seconds.size(), PEAR_HAS_THREADS ? 3u : 1u)
+        << "the borders fit one range: nothing tested";
     if (threads == 1) {
       first = result.triangles;
       expect_cdt(result.triangles);

@@ -12,6 +12,7 @@
 #include "cdt/mesh.hpp"
 #include "cdt/partition.hpp"
 #include "clean/clean.hpp"
+#include "pear/config.hpp"
 #include "pear/generate.hpp"
 #include "pipeline/threading.hpp"
 #include "support.hpp"
@@ -148,7 +149,7 @@ TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
       return p.name == "cdt relink borders: pair";
     });
     ASSERT_NE(pair, profile.phases.end());
-    EXPECT_GE(pair->task_seconds.size(), 3u);
+    EXPECT_GE(pair->task_seconds.size(), PEAR_HAS_THREADS ? 3u : 1u);  // one range without threads
   }
 }
 
