@@ -459,9 +459,10 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     // would not (fractals, spirals), where a ring folds back, and past two partitions: the
     // runs are serial, the grid's search parallel (its span the shorter from four on).
     std::optional<Verdict> by_chains;
-    if (ctx.partitions <= 2 && runs_worth_trying(polygon))
-      ctx.run_serial("check simplicity",
-                     [&] { by_chains = check_chains(polygon, true, chains_budget * n); });
+    if (ctx.partitions <= 2)
+      ctx.run_serial("check simplicity", [&] {
+        if (runs_worth_trying(polygon)) by_chains = check_chains(polygon, true, chains_budget * n);
+      });
     if (by_chains) return *by_chains;
     // Parallel on ctx's runner; records its own phases in the profile.
     verdict.violation = find_violation(polygon, ctx);
