@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <span>
 
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
@@ -137,71 +138,100 @@ struct KeyedBorder {
 /// Border half-edges per range task: fewer are paired on one thread.
 constexpr std::size_t borders_per_range = 4096;
 
+/// The sets' border half-edges with their ends as keys, scattered into ranges of their sorted
+/// order: cut at keys sampled every k-th border (in set order, so the cuts depend on the
+/// partitions only) and compared by ends alone, so the two half-edges of an edge share a range.
+/// The ranges, each sorted, one after another are the order one sort of them all gives.
+class BorderRanges {
+ public:
+  BorderRanges(const Mesh& mesh, const std::vector<std::vector<std::uint32_t>>& sets)
+      : mesh_(mesh), sets_(sets), offset_(1, 0) {
+    for (const auto& borders : sets) offset_.push_back(offset_.back() + borders.size());
+  }
+
+  std::size_t total() const { return offset_.back(); }
+  std::size_t ranges() const { return cuts_.size() + 1; }
+  std::span<KeyedBorder> range(std::size_t r) {
+    return std::span(all_).subspan(start_[r], start_[r + 1] - start_[r]);
+  }
+
+  void cut(std::size_t ranges) {
+    cuts_.clear();
+    for (std::size_t k = 1; k < ranges; ++k) {
+      const std::size_t i = k * total() / ranges;
+      const auto s = static_cast<std::size_t>(std::upper_bound(offset_.begin(), offset_.end(), i) -
+                                              offset_.begin() - 1);
+      cuts_.push_back(keyed(sets_[s][i - offset_[s]]));
+    }
+    detail::sort(cuts_.begin(), cuts_.end());
+  }
+
+  /// Each set's borders counted per range, then (after the counts are summed into places,
+  /// range by range, set by set) scattered by the set's own task.
+  void scatter(const RunContext& ctx) {
+    const std::size_t sets = sets_.size(), ranges = this->ranges();
+    std::vector<std::size_t> place(sets * ranges, 0);
+    std::vector<std::uint32_t> range_of_border(total());
+    ctx.run_tasks("cdt relink borders: keys", sets, [&](std::size_t s) {
+      for (std::size_t i = 0; i < sets_[s].size(); ++i) {
+        const std::size_t r = range_of(keyed(sets_[s][i]));
+        range_of_border[offset_[s] + i] = static_cast<std::uint32_t>(r);
+        ++place[s * ranges + r];
+      }
+    });
+    start_.assign(ranges + 1, total());
+    for (std::size_t r = 0, at = 0; r < ranges; ++r) {
+      start_[r] = at;
+      for (std::size_t s = 0; s < sets; ++s) {
+        const std::size_t count = place[s * ranges + r];
+        place[s * ranges + r] = at;
+        at += count;
+      }
+    }
+    all_.resize(total());
+    ctx.run_tasks("cdt relink borders: scatter", sets, [&](std::size_t s) {
+      for (std::size_t i = 0; i < sets_[s].size(); ++i)
+        all_[place[s * ranges + range_of_border[offset_[s] + i]]++] = keyed(sets_[s][i]);
+    });
+  }
+
+ private:
+  // By position, not caller index: see pair_by_position in mesh.cpp.
+  KeyedBorder keyed(std::uint32_t h) const {
+    const EdgeEnds ends(mesh_.points[mesh_.origin(h)], mesh_.points[mesh_.destination(h)]);
+    return {ends.low, ends.high, h};
+  }
+  std::size_t range_of(const KeyedBorder& b) const {
+    const auto after = std::upper_bound(
+        cuts_.begin(), cuts_.end(), b,
+        [](const KeyedBorder& x, const KeyedBorder& y) { return ends_before(x, y); });
+    return static_cast<std::size_t>(after - cuts_.begin());
+  }
+
+  const Mesh& mesh_;
+  const std::vector<std::vector<std::uint32_t>>& sets_;
+  std::vector<std::size_t> offset_;  ///< set s's borders are [offset_[s], offset_[s + 1])
+  std::vector<KeyedBorder> cuts_, all_;
+  std::vector<std::size_t> start_;  ///< range r is all_[start_[r], start_[r + 1])
+};
+
 }  // namespace
 
 std::vector<std::uint32_t> relink_borders(Mesh& mesh,
                                           const std::vector<std::vector<std::uint32_t>>& sets,
                                           const RunContext& ctx) {
-  // By position, not caller index: see pair_by_position in mesh.cpp.
-  const auto keyed = [&](std::uint32_t h) {
-    const EdgeEnds ends(mesh.points[mesh.origin(h)], mesh.points[mesh.destination(h)]);
-    return KeyedBorder{ends.low, ends.high, h};
-  };
-  std::vector<std::size_t> offset(1, 0);
-  for (const auto& borders : sets) offset.push_back(offset.back() + borders.size());
-  const std::size_t total = offset.back();
-  // Ranges of the sorted order, cut at keys sampled every k-th border (in set order, so the
-  // cuts depend on the partitions only): each range is sorted and paired by its own task, and
-  // the ranges one after another are the whole order, as one sort would give it.
-  const std::size_t ranges =
-      PEAR_HAS_THREADS ? std::clamp<std::size_t>(total / borders_per_range, 1, 256) : 1;
-  std::vector<KeyedBorder> cuts;
-  for (std::size_t k = 1; k < ranges; ++k) {
-    const std::size_t i = k * total / ranges;
-    const std::size_t s = static_cast<std::size_t>(
-        std::upper_bound(offset.begin(), offset.end(), i) - offset.begin() - 1);
-    cuts.push_back(keyed(sets[s][i - offset[s]]));
-  }
-  detail::sort(cuts.begin(), cuts.end());
-  // By ends alone, so that both half-edges of an edge fall in one range.
-  const auto range_of = [&](const KeyedBorder& b) {
-    return static_cast<std::size_t>(
-        std::upper_bound(
-            cuts.begin(), cuts.end(), b,
-            [](const KeyedBorder& x, const KeyedBorder& y) { return ends_before(x, y); }) -
-        cuts.begin());
-  };
-  // Counted per set and range, then each set scatters its borders to their ranges.
-  std::vector<std::size_t> counts(sets.size() * ranges, 0);
-  std::vector<std::uint32_t> range(total);
-  ctx.run_tasks("cdt relink borders: keys", sets.size(), [&](std::size_t s) {
-    for (std::size_t i = 0; i < sets[s].size(); ++i) {
-      const std::size_t r = range_of(keyed(sets[s][i]));
-      range[offset[s] + i] = static_cast<std::uint32_t>(r);
-      ++counts[s * ranges + r];
-    }
-  });
-  std::vector<std::size_t> range_start(ranges + 1, 0), place(sets.size() * ranges);
-  for (std::size_t r = 0, at = 0; r < ranges; ++r) {
-    range_start[r] = at;
-    for (std::size_t s = 0; s < sets.size(); ++s)
-      place[s * ranges + r] = at, at += counts[s * ranges + r];
-  }
-  range_start[ranges] = total;
-  std::vector<KeyedBorder> all(total);
-  ctx.run_tasks("cdt relink borders: scatter", sets.size(), [&](std::size_t s) {
-    for (std::size_t i = 0; i < sets[s].size(); ++i)
-      all[place[s * ranges + range[offset[s] + i]]++] = keyed(sets[s][i]);
-  });
-  std::vector<std::vector<std::uint32_t>> firsts(ranges);
-  ctx.run_tasks("cdt relink borders: pair", ranges, [&](std::size_t r) {
-    const auto first = all.begin() + static_cast<std::ptrdiff_t>(range_start[r]);
-    const auto last = all.begin() + static_cast<std::ptrdiff_t>(range_start[r + 1]);
-    detail::sort(first, last);
-    for (auto it = first; it + 1 < last; it += 2) {
-      mesh.twin[it->h] = (it + 1)->h;
-      mesh.twin[(it + 1)->h] = it->h;
-      firsts[r].push_back(it->h);
+  BorderRanges borders(mesh, sets);
+  borders.cut(
+      PEAR_HAS_THREADS ? std::clamp<std::size_t>(borders.total() / borders_per_range, 1, 256) : 1);
+  borders.scatter(ctx);
+  std::vector<std::vector<std::uint32_t>> firsts(borders.ranges());
+  ctx.run_tasks("cdt relink borders: pair", borders.ranges(), [&](std::size_t r) {
+    const std::span<KeyedBorder> range = borders.range(r);
+    detail::sort(range.begin(), range.end());
+    for (std::size_t i = 0; i + 1 < range.size(); i += 2) {
+      mesh.twin[range[i].h] = range[i + 1].h;
+      mesh.twin[range[i + 1].h] = range[i].h;
+      firsts[r].push_back(range[i].h);
     }
   });
   std::vector<std::uint32_t> first_of_pair;
