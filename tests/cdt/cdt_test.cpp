@@ -88,18 +88,10 @@ TEST(Cdt, BorderRoundsRunInParallelAndGiveTheSameCdt) {
   Triangles first;
   for (unsigned threads : {1u, 2u, 4u}) {
     RunProfile profile;
-    Options options{.algorithm = Algorithm::sequential,
-                    .delaunay = true,
-                    .threads = threads,
-                    .partitions = 4,
-                    .executor = executor_for(threads),
-                    .profile = &profile};
-    const auto result = triangulate(polygon, options);
+    const auto result = constrained_delaunay(polygon, Algorithm::sequential, threads, 4, &profile);
     ASSERT_EQ(result.status, Status::ok);
-    const bool rounds =
-        std::any_of(profile.phases.begin(), profile.phases.end(),
-                    [](const auto& p) { return p.name == "cdt border round: flip"; });
-    EXPECT_TRUE(rounds) << "no round was large enough to run in parallel";
+    EXPECT_GT(tasks_of(profile, "cdt border round: flip"), 0u)
+        << "no round was large enough to run in parallel";
     EXPECT_GT(result.delaunay.flips_on_borders, 1000u);
     if (threads == 1) {
       first = result.triangles;
@@ -118,19 +110,9 @@ TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
   Triangles first;
   for (unsigned threads : {1u, 2u}) {
     RunProfile profile;
-    Options options{.algorithm = Algorithm::sequential,
-                    .delaunay = true,
-                    .threads = threads,
-                    .partitions = 64,
-                    .executor = executor_for(threads),
-                    .profile = &profile};
-    const auto result = triangulate(polygon, options);
+    const auto result = constrained_delaunay(polygon, Algorithm::sequential, threads, 64, &profile);
     ASSERT_EQ(result.status, Status::ok);
-    const auto pair = std::find_if(profile.phases.begin(), profile.phases.end(), [](const auto& p) {
-      return p.name == "cdt relink borders: pair";
-    });
-    ASSERT_NE(pair, profile.phases.end());
-    EXPECT_GE(pair->task_seconds.size(), PEAR_HAS_THREADS ? 3u : 1u)
+    EXPECT_GE(tasks_of(profile, "cdt relink borders: pair"), PEAR_HAS_THREADS ? 3u : 1u)
         << "the borders fit one range: nothing tested";
     if (threads == 1) {
       first = result.triangles;

@@ -145,11 +145,8 @@ TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
     for (std::uint32_t h : all) mesh.twin[h] = no_twin;
     EXPECT_EQ(relink_borders(mesh, borders, ctx), expected);
     EXPECT_EQ(mesh.twin, reference.twin);
-    const auto pair = std::find_if(profile.phases.begin(), profile.phases.end(), [](const auto& p) {
-      return p.name == "cdt relink borders: pair";
-    });
-    ASSERT_NE(pair, profile.phases.end());
-    EXPECT_GE(pair->task_seconds.size(), PEAR_HAS_THREADS ? 3u : 1u);  // one range without threads
+    EXPECT_GE(testing::tasks_of(profile, "cdt relink borders: pair"), PEAR_HAS_THREADS ? 3u : 1u)
+        << "one range without threads";
   }
 }
 

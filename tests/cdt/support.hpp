@@ -10,6 +10,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pear/config.hpp"
@@ -61,12 +62,21 @@ inline Executor* executor_for([[maybe_unused]] unsigned threads) {
 }
 
 inline Triangulation<> constrained_delaunay(const Polygon& polygon, Algorithm algorithm,
-                                            unsigned threads, unsigned partitions) {
+                                            unsigned threads, unsigned partitions,
+                                            RunProfile* profile = nullptr) {
   Options options{.algorithm = algorithm, .delaunay = true};
   options.threads = threads;
   options.partitions = partitions;
   options.executor = executor_for(threads);
+  options.profile = profile;
   return triangulate(polygon, options);
+}
+
+/// The tasks the profile recorded for phase `name`; none when it has no such phase.
+inline std::size_t tasks_of(const RunProfile& profile, std::string_view name) {
+  for (const auto& phase : profile.phases)
+    if (phase.name == name) return phase.task_seconds.size();
+  return 0;
 }
 
 /// Valid triangulation with n + 2h - 2 - 2m triangles, exact area, every edge locally Delaunay.
