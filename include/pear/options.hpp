@@ -71,6 +71,9 @@ struct PEAR_API RunProfile {
   struct Phase {
     std::string name;
     std::vector<double> task_seconds;
+    /// The phase's elapsed time as it ran: on several threads, set beside the projection
+    /// max(sum / threads, longest task), what scheduling and memory cost on the machine.
+    double wall_seconds = 0;
   };
   std::vector<Phase> phases;
   /// Total work: the time on one thread.

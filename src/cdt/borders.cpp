@@ -256,7 +256,8 @@ std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects, const 
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   if (ctx.profile)
-    ctx.profile->phases.push_back({"cdt border rounds, small", {small_rounds_seconds}});
+    ctx.profile->phases.push_back(
+        {"cdt border rounds, small", {small_rounds_seconds}, small_rounds_seconds});
   return flips;
 }
 

@@ -76,20 +76,27 @@ struct RunContext {
   template <class Task>
   void run_tasks(const char* phase, std::size_t count, Task&& task) const {
     std::vector<double>* times = nullptr;
+    const std::size_t recorded = profile ? profile->phases.size() : 0;
     if (profile) {
       profile->phases.push_back({phase, std::vector<double>(count, 0.0)});
       times = &profile->phases.back().task_seconds;
     }
+    const auto since = [](std::chrono::steady_clock::time_point start) {
+      return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
     const auto timed = [&](std::size_t i) {
       if (!times) return task(i);
       const auto start = std::chrono::steady_clock::now();
       task(i);
-      (*times)[i] = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      (*times)[i] = since(start);
     };
+    const auto start = std::chrono::steady_clock::now();
     if (parallel() && count > 1)
       runner->run(count, timed);
     else
       for (std::size_t i = 0; i < count; ++i) timed(i);
+    // By index: a task may record phases of its own (nested runs) and move the vector.
+    if (profile) profile->phases[recorded].wall_seconds = since(start);
   }
 
   /// Runs a sequential step, recorded as a phase of one task when profiling.

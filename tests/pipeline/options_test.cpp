@@ -107,5 +107,27 @@ TEST(Options, AutomaticTakesNotSimplePolygonsSequentially) {
   }
 }
 
+// Each phase's elapsed time holds its tasks: on one thread their sum, on several at least the
+// longest (a phase left at 0 or timed around part of its tasks fails).
+TEST(Options, ProfileRecordsEachPhaseElapsedTime) {
+  const Polygon polygon = generate_polygon("star", 40'000);
+  for (const unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE(std::to_string(threads) + " threads");
+    RunProfile profile;
+    const auto result = triangulate(
+        polygon, {.algorithm = Algorithm::partition_and_cut, .delaunay = true, .threads = threads,
+                  .partitions = 4, .profile = &profile});
+    ASSERT_EQ(result.status, Status::ok);
+    ASSERT_GT(profile.phases.size(), 5u);
+    for (const auto& phase : profile.phases) {
+      SCOPED_TRACE(phase.name);
+      double sum = 0, longest = 0;
+      for (const double t : phase.task_seconds) sum += t, longest = std::max(longest, t);
+      EXPECT_GT(phase.wall_seconds, 0.0);
+      EXPECT_GE(phase.wall_seconds, (threads == 1 ? sum : longest) * (1 - 1e-9));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace pear
