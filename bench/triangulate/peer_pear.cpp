@@ -64,11 +64,16 @@ Triangulator pear_entry(std::string name, pear::Options options) {
 std::vector<Triangulator> pear_triangulators() {
   using pear::Algorithm;
   using pear::EarHeuristic;
+  // threads = 1: left at 0, the sequential engine checks and bridges a polygon of 20,000
+  // vertices or more in parts on every hardware thread, and would not be the one-thread baseline.
   std::vector<Triangulator> all = {
-      pear_entry("pear_top", {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::top}),
-      pear_entry("pear_fast",
-                 {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::fast}),
-      pear_entry("pear_cdt", {.algorithm = Algorithm::sequential, .delaunay = true}),
+      pear_entry("pear_top", {.algorithm = Algorithm::sequential,
+                              .heuristic = EarHeuristic::top,
+                              .threads = 1}),
+      pear_entry("pear_fast", {.algorithm = Algorithm::sequential,
+                               .heuristic = EarHeuristic::fast,
+                               .threads = 1}),
+      pear_entry("pear_cdt", {.algorithm = Algorithm::sequential, .delaunay = true, .threads = 1}),
   };
   const std::pair<const char*, Algorithm> variants[] = {{"pc", Algorithm::partition_and_cut},
                                                         {"mc", Algorithm::mark_and_cut},
@@ -76,7 +81,7 @@ std::vector<Triangulator> pear_triangulators() {
                                                         {"auto", Algorithm::automatic}};
   for (const bool delaunay : {false, true})
     for (const auto& [short_name, algorithm] : variants)
-      for (const unsigned threads : {1u, 2u, 4u, 8u}) {
+      for (const unsigned threads : {1u, 2u, 4u, 8u, 16u}) {
         std::string name = "pear_" + std::string(short_name) + "_t" + std::to_string(threads);
         if (delaunay) name += "_cdt";
         all.push_back(

@@ -38,7 +38,7 @@ struct Triangulator {
   unsigned threads = 1;  ///< threads the triangulator runs on (the peers: 1)
 };
 
-/// pear's sequential engine, CDT and parallel variants at 1, 2, 4 and 8 threads, then the peers
+/// pear's sequential engine, CDT and parallel variants at 1, 2, 4, 8 and 16 threads, then the peers
 /// compiled in and available at run time.
 std::vector<Triangulator> triangulators();
 
