@@ -74,7 +74,8 @@ def wins_and_losses(t):
 
 
 def hand_written(name):
-    """A section kept in bench/report/ (not regenerated): the reading, the Python package's."""
+    """A section kept in bench/report/ (not regenerated): the reading, the Python and JavaScript
+    packages' runs, the thread counts measured on a larger machine."""
     path = os.path.join(HERE, name)
     if not os.path.exists(path):
         return ""
@@ -145,6 +146,7 @@ def document(run, figs, stem):
         tables.memory(t),
         f"\n![memory]({figs['memory']})\n" if figs.get("memory") else "",
         "\n" + hand_written("python.md"),
+        "\n" + hand_written("javascript.md").rstrip("\n"),
         "\n## Every time measured (ms)\n", tables.all_times(t),
         "\n## Skipped or invalid\n", tables.problems(t),
     ]
