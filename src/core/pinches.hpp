@@ -23,6 +23,15 @@ inline std::uint64_t position_hash(const Point& p) {
   return h ^ (h >> 31);
 }
 
+/// Which nodes share their position with another node (bridge ends, rings touching at a
+/// vertex), as the pipeline learnt it before clipping: the clippers test those in every ear
+/// test, whatever their angle. Marks may include nodes whose twin is in another cycle: an extra
+/// hashed node can only make an ear test stricter.
+struct SharedPositions {
+  const std::vector<std::uint8_t>* marks = nullptr;  ///< per node, when known (TouchingPoints)
+  bool none = false;  ///< the caller knows that no two nodes share a position
+};
+
 /// Sets pinch[u] for every live node u (alive[u] != 0) whose position another live node has;
 /// `live` is the number of live nodes, `table` scratch memory. Exact (hash on the coordinates).
 void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,

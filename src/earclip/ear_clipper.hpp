@@ -11,18 +11,12 @@
 #include "core/boundary.hpp"
 #include "core/cycle_clipper.hpp"
 #include "core/ear_queue.hpp"
+#include "core/pinches.hpp"
 #include "core/reflex_grid.hpp"
 #include "core/stage.hpp"
 #include "pear/pear.hpp"
 
 namespace pear::detail {
-
-/// Which nodes share their position with another node (bridge ends, rings touching at a
-/// vertex): the clippers test those in every ear test, whatever their angle.
-struct SharedPositions {
-  const std::vector<std::uint8_t>* marks = nullptr;  ///< per node, when known (TouchingPoints)
-  bool none = false;  ///< the caller knows that no two nodes share a position
-};
 
 class EarClipper final : public CycleClipper {
  public:

@@ -101,9 +101,9 @@ class MarkAndCut {
 }  // namespace
 
 std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& ctx,
-                           TriangleList& out) {
+                           TriangleList& out, SharedPositions shared) {
   SharedBoundary s;
-  const std::size_t nodes = s.start(b, entry, ctx);
+  const std::size_t nodes = s.start(b, entry, ctx, shared);
   const std::size_t chunks = std::min<std::size_t>(ctx.partitions, nodes / min_chunk_nodes);
   if (chunks < 2) return entry;
   MarkAndCut rounds(s, chunks, ctx);

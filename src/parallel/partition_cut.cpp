@@ -32,11 +32,11 @@ void gather(std::vector<TriangleList>& parts, std::size_t count, const RunContex
 }  // namespace
 
 std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                                const RunContext& ctx, TriangleList& out) {
+                                const RunContext& ctx, TriangleList& out, SharedPositions shared) {
   const std::size_t partitions = ctx.partitions;
   if (partitions < 2) return entry;
   SharedBoundary s;
-  std::size_t nodes = s.start(b, entry, ctx);
+  std::size_t nodes = s.start(b, entry, ctx, shared);
   // A clipper (with its queue) for each chain there can be, not for each partition asked for.
   const std::size_t most = std::min(partitions, nodes / min_chain_nodes);
   std::vector<ChainClipper> clippers(most);

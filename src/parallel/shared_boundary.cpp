@@ -7,22 +7,32 @@
 
 namespace pear::detail {
 
-std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx) {
+std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx,
+                                  SharedPositions shared) {
   b = &boundary;
   const std::size_t size = b->size();
-  alive.assign(size, 0);
-  hashed.assign(size, 0);
-  owner.assign(size, landmark);
-  stamp.assign(size, 0);
-  order.clear();
-  std::uint32_t v = entry;
-  do {
-    alive[v] = 1;
-    order.push_back(v);
-    v = b->next[v];
-  } while (v != entry);
-  std::vector<std::uint32_t> table;
-  find_pinches(*b, alive, order.size(), pinch, table);
+  ctx.run_serial("classify: walk", [&] {
+    alive.assign(size, 0);
+    hashed.assign(size, 0);
+    owner.assign(size, landmark);
+    stamp.assign(size, 0);
+    order.clear();
+    std::uint32_t v = entry;
+    do {
+      alive[v] = 1;
+      order.push_back(v);
+      v = b->next[v];
+    } while (v != entry);
+    // Known from the check and the bridges (the engine's marks): no hashing of every node.
+    if (shared.marks != nullptr && shared.marks->size() == size) {
+      pinch = *shared.marks;
+    } else if (shared.none) {
+      pinch.assign(size, 0);
+    } else {
+      std::vector<std::uint32_t> table;
+      find_pinches(*b, alive, order.size(), pinch, table);
+    }
+  });
   ctx.run_tasks("classify", ctx.partitions, [&](std::size_t part) {
     const std::size_t first = part_begin(order.size(), ctx.partitions, part);
     const std::size_t last = part_begin(order.size(), ctx.partitions, part + 1);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/pinches.hpp"
 #include "core/reflex_grid.hpp"
 #include "core/stage.hpp"
 
@@ -29,9 +30,10 @@ struct SharedBoundary {
   std::vector<std::uint32_t> stamp;      ///< bumped when a node's ear status may have changed
   std::vector<std::uint32_t> order;      ///< live nodes in cycle order (refreshed per round)
 
-  /// Walks the cycle through `entry`, marks it alive, finds pinches and hashed nodes. Returns
-  /// the cycle's length.
-  std::size_t start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx);
+  /// Walks the cycle through `entry`, marks it alive, finds pinches (unless `shared` knows
+  /// them) and hashed nodes. Returns the cycle's length.
+  std::size_t start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx,
+                    SharedPositions shared = {});
   /// Refreshes `order` from a live node of the cycle; returns a live node or no node.
   std::uint32_t refresh_order(const RunContext& ctx);
   /// Cuts `order` into `chains` runs at evenly spaced landmarks, the first at `offset`; sets

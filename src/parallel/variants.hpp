@@ -6,6 +6,7 @@
 
 #include "core/boundary.hpp"
 #include "core/cycle_clipper.hpp"
+#include "core/pinches.hpp"
 #include "core/stage.hpp"
 
 namespace pear::detail {
@@ -18,15 +19,17 @@ inline constexpr std::uint32_t no_node = UINT32_MAX;
 /// Paper §2.2: landmarks cut the cycle through `entry` into ctx.partitions chains, each clipped
 /// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
 /// (chain after chain) to `out` and returns a live node of what is left for the sequential
-/// engine to finish, or no_node when nothing is left.
+/// engine to finish, or no_node when nothing is left. `shared`: the nodes at repeated positions
+/// when the engine knows them (else they are hashed here).
 [[gnu::noinline]] std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry,
                                                   EarHeuristic heuristic, const RunContext& ctx,
-                                                  TriangleList& out);
+                                                  TriangleList& out, SharedPositions shared = {});
 
 /// Paper §2.3: rounds of "mark every second convex node, clip in parallel the marked ones that
 /// are ears" until a round clips few; returns what is left, as partition_and_cut does.
 [[gnu::noinline]] std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry,
-                                             const RunContext& ctx, TriangleList& out);
+                                             const RunContext& ctx, TriangleList& out,
+                                             SharedPositions shared = {});
 
 /// Paper §2.1: splits the polygon bounded by the cycle through `entry` along ctx.partitions - 1
 /// vertical lines, triangulates the parts in parallel, and removes the Steiner points again, so

@@ -245,10 +245,10 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
                                 best_effort_vertex);
     case Algorithm::partition_and_cut:
-      rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out);
+      rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, shared_);
       break;
     case Algorithm::mark_and_cut:
-      rest = mark_and_cut(boundary_, entry, ctx, out);
+      rest = mark_and_cut(boundary_, entry, ctx, out, shared_);
       break;
     default:
       break;
