@@ -86,24 +86,36 @@ std::size_t flip_round(Mesh& mesh, std::vector<std::uint32_t>& suspects, RoundMa
   std::vector<std::uint32_t>&picked = marks.picked, &waiting = marks.waiting;
   picked.clear();
   waiting.clear();
-  for (std::size_t i = 0; i < suspects.size(); ++i) {
-    if (!needs[i]) continue;
-    const bool independent = picked.size() < budget && pick(mesh, suspects[i], marks);
-    (independent ? picked : waiting).push_back(suspects[i]);
-  }
+  const auto pick_all = [&] {
+    for (std::size_t i = 0; i < suspects.size(); ++i) {
+      if (!needs[i]) continue;
+      const bool independent = picked.size() < budget && pick(mesh, suspects[i], marks);
+      (independent ? picked : waiting).push_back(suspects[i]);
+    }
+  };
+  if (parallel)
+    ctx.run_serial("cdt border round: pick", pick_all);
+  else
+    pick_all();
   for_chunks(ctx, parallel, "cdt border round: flip", picked.size(),
              [&](std::size_t begin, std::size_t end) {
                for (std::size_t i = begin; i < end; ++i) flip(mesh, picked[i], FlipScope{});
              });
   suspects.clear();
   if (picked.empty()) return 0;  // nothing to flip (or no budget left): done
-  for (std::uint32_t h : waiting) list_once(mesh, h, marks, suspects);
-  for (std::uint32_t h : picked) {
-    const std::uint32_t g = mesh.twin[h];
-    for (std::uint32_t e : {next_half_edge(h), next_half_edge(next_half_edge(h)), next_half_edge(g),
-                            next_half_edge(next_half_edge(g))})
-      list_once(mesh, e, marks, suspects);
-  }
+  const auto list_next = [&] {
+    for (std::uint32_t h : waiting) list_once(mesh, h, marks, suspects);
+    for (std::uint32_t h : picked) {
+      const std::uint32_t g = mesh.twin[h];
+      for (std::uint32_t e : {next_half_edge(h), next_half_edge(next_half_edge(h)),
+                              next_half_edge(g), next_half_edge(next_half_edge(g))})
+        list_once(mesh, e, marks, suspects);
+    }
+  };
+  if (parallel)
+    ctx.run_serial("cdt border round: list", list_next);
+  else
+    list_next();
   return picked.size();
 }
 
@@ -242,9 +254,11 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
 std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects, const RunContext& ctx,
                          std::size_t budget) {
   RoundMarks marks;
-  marks.own.assign(mesh.triangles->size(), 0);
-  marks.touched.assign(mesh.triangles->size(), 0);
-  marks.listed.assign(mesh.twin.size(), 0);
+  ctx.run_serial("cdt border rounds: marks", [&] {
+    marks.own.assign(mesh.triangles->size(), 0);
+    marks.touched.assign(mesh.triangles->size(), 0);
+    marks.listed.assign(mesh.twin.size(), 0);
+  });
   std::size_t flips = 0;
   double small_rounds_seconds = 0;  // rounds run here, recorded as one phase
   while (!suspects.empty()) {

@@ -52,7 +52,8 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
                   DelaunayStatistics& stats) {
   TrianglePartition partition;
   ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
-  std::vector<std::uint8_t> queued(mesh.twin.size(), 0);
+  std::vector<std::uint8_t> queued;
+  ctx.run_serial("cdt flip sets: queue", [&] { queued.assign(mesh.twin.size(), 0); });
   std::vector<std::size_t> flips(sets, 0);
   std::vector<std::vector<std::uint32_t>> borders(sets);
   ctx.run_tasks("cdt flip sets", sets, [&](std::size_t s) {
