@@ -5,6 +5,7 @@
 // one untimed round) and each keeps the median of its rounds: ratios compare the same moments.
 //
 //   pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] INPUT...
+//   (--rounds 0 with --phases: the profiled runs only)
 //   INPUT: a GeoJSON polygon file (.json, or .json.gz with zlib) or FAMILY:N (generate_polygon)
 //
 // Writes a JSON array to stdout (bench/report/threads.py makes the table): the machine, then per
@@ -68,10 +69,13 @@ std::vector<Config> configs(const std::vector<unsigned>& thread_counts) {
   for (const unsigned t : thread_counts) {
     const std::string suffix = "_t" + std::to_string(t);
     for (const auto& [name, algorithm] : variants)
-      all.push_back({name + suffix, t,
-                     {.algorithm = algorithm, .threads = t, .executor = executor_for(t)}});
-    all.push_back({"auto" + suffix + "_cdt", t,
-                   {.algorithm = Algorithm::automatic, .delaunay = true, .threads = t,
+      all.push_back(
+          {name + suffix, t, {.algorithm = algorithm, .threads = t, .executor = executor_for(t)}});
+    all.push_back({"auto" + suffix + "_cdt",
+                   t,
+                   {.algorithm = Algorithm::automatic,
+                    .delaunay = true,
+                    .threads = t,
                     .executor = executor_for(t)}});
   }
   return all;
@@ -127,8 +131,7 @@ Input load(const std::string& spec) {
   return input;
 }
 
-void time_rounds(bench::Json& out, const Input& input, const std::vector<Config>& all,
-                 int rounds) {
+void time_rounds(bench::Json& out, const Input& input, const std::vector<Config>& all, int rounds) {
   std::vector<std::vector<double>> times(all.size());
   std::vector<std::size_t> triangles(all.size(), 0);
   for (int round = -1; round < rounds; ++round) {  // round -1: untimed, warms memory and caches
@@ -226,7 +229,7 @@ int main(int argc, char** argv) {
       break;
     }
   }
-  if (specs.empty() || thread_counts.empty() || rounds < 1) {
+  if (specs.empty() || thread_counts.empty() || rounds < 0 || (rounds == 0 && !phases)) {
     std::fprintf(stderr,
                  "usage: pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] INPUT...\n"
                  "INPUT: a GeoJSON polygon file or FAMILY:N\n");
@@ -242,7 +245,7 @@ int main(int argc, char** argv) {
   for (const std::string& spec : specs) {
     try {
       const Input input = load(spec);
-      time_rounds(out, input, all, rounds);
+      if (rounds > 0) time_rounds(out, input, all, rounds);
       if (phases) {
         const unsigned most = *std::max_element(thread_counts.begin(), thread_counts.end());
         for (const Config& c : all)

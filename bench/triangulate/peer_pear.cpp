@@ -67,12 +67,12 @@ std::vector<Triangulator> pear_triangulators() {
   // threads = 1: left at 0, the sequential engine checks and bridges a polygon of 20,000
   // vertices or more in parts on every hardware thread, and would not be the one-thread baseline.
   std::vector<Triangulator> all = {
-      pear_entry("pear_top", {.algorithm = Algorithm::sequential,
-                              .heuristic = EarHeuristic::top,
-                              .threads = 1}),
-      pear_entry("pear_fast", {.algorithm = Algorithm::sequential,
-                               .heuristic = EarHeuristic::fast,
-                               .threads = 1}),
+      pear_entry(
+          "pear_top",
+          {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::top, .threads = 1}),
+      pear_entry(
+          "pear_fast",
+          {.algorithm = Algorithm::sequential, .heuristic = EarHeuristic::fast, .threads = 1}),
       pear_entry("pear_cdt", {.algorithm = Algorithm::sequential, .delaunay = true, .threads = 1}),
   };
   const std::pair<const char*, Algorithm> variants[] = {{"pc", Algorithm::partition_and_cut},

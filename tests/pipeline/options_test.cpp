@@ -114,9 +114,11 @@ TEST(Options, ProfileRecordsEachPhaseElapsedTime) {
   for (const unsigned threads : {1u, 2u}) {
     SCOPED_TRACE(std::to_string(threads) + " threads");
     RunProfile profile;
-    const auto result = triangulate(
-        polygon, {.algorithm = Algorithm::partition_and_cut, .delaunay = true, .threads = threads,
-                  .partitions = 4, .profile = &profile});
+    const auto result = triangulate(polygon, {.algorithm = Algorithm::partition_and_cut,
+                                              .delaunay = true,
+                                              .threads = threads,
+                                              .partitions = 4,
+                                              .profile = &profile});
     ASSERT_EQ(result.status, Status::ok);
     ASSERT_GT(profile.phases.size(), 5u);
     for (const auto& phase : profile.phases) {
