@@ -115,8 +115,9 @@ serial task).
 The **bound** is the sequential default's time at one partition (the third column; for the CDT
 rows, the sequential CDT's) over `RunProfile::projected(k)`, Brent's bound per phase,
 max(work / k, longest task), summed: the speedup k threads would give over one if scheduling were
-greedy and memory free. It is a projection, not a measurement: no machine with more than 2
-cores was at hand. A variant whose work is below the sequential engine's (mark-and-cut: no
+greedy and memory free. It is a projection, not a measurement: the times measured at 1 to 16
+threads on a 16-core machine, with each phase's elapsed time beside this bound, are in
+[benchmarks.md](benchmarks.md#measured-on-16-cores-fig-9s-triangles) (`bench/threads.sh`). A variant whose work is below the sequential engine's (mark-and-cut: no
 queue) can exceed k. The last column is the CDT's own phases (adjacency build, partition, flips
 in the sets, border fix-up) by the same bound over their own work.
 
