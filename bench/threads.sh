@@ -72,6 +72,7 @@ ldd "$build/bench/profile/pear_threads" | awk '/=> \// {print $3}' | while read 
   esac
 done
 cp "$root/bench/report/machine.py" "$pack/"
+c++ --version | head -1 > "$pack/built_with.txt"
 inputs=()
 for name in $coasts; do
   file=$(ls "$corpus/coast/${name}"_gshhg_*.json.gz 2>/dev/null | head -1 || true)
@@ -98,6 +99,8 @@ out=\${1:?usage: run.sh OUT [ROUNDS] [BUDGET]}; rounds=\${2:-$rounds}; budget=\$
 mkdir -p "\$out/parts"
 export LD_LIBRARY_PATH="\$here/lib"
 python3 "\$here/machine.py" threads "$(git -C "$root" rev-parse --short HEAD)" > "\$out/machine.json"
+# The compiler that built the binary (machine.py names the one on this machine, if any).
+python3 -c 'import json, sys; m = json.load(open(sys.argv[1])); m["built_with"] = open(sys.argv[2]).read().strip(); json.dump(m, open(sys.argv[1], "w"), indent=1)' "\$out/machine.json" "\$here/built_with.txt"
 start=\$SECONDS
 for input in ${ordered[*]}; do
   left=\$((budget - (SECONDS - start)))

@@ -97,6 +97,23 @@ def measured_speedups(timings, variant, threads, cdt):
     return sorted(points)
 
 
+def many_core_speedups(threads_run, variant, threads, cdt):
+    """Points (vertices, speedup) of a bench/threads.sh run: the variant (its CDT panel: automatic
+    with the CDT, which clips by partition-and-cut past 2 threads) over the sequential engine."""
+    if not threads_run:
+        return []
+    records = threads_run[0]
+    base = "cdt" if cdt else "top"
+    config = (f"auto_t{threads}_cdt" if cdt else f"{variant}_t{threads}")
+    times, vertices = {}, {}
+    for r in records:
+        if "median_ms" in r and r.get("triangles", 0) > 0:
+            times.setdefault(r["input"], {})[r["config"]] = r["median_ms"]
+            vertices[r["input"]] = r["vertices"]
+    return sorted((vertices[i], c[base] / c[config]) for i, c in times.items()
+                  if c.get(base) and c.get(config))
+
+
 def projected_speedups(profile, variant, threads):
     points = []
     for run in profile:
@@ -107,7 +124,7 @@ def projected_speedups(profile, variant, threads):
     return sorted(points)
 
 
-def fig9_speedup(timings, profile, docs):
+def fig9_speedup(timings, profile, docs, threads_run=None):
     panels = [("dc", False), ("pc", False), ("mc", False), ("pc", True)]
     fig, axes = plt.subplots(2, 2, figsize=(11, 8), sharey=True)
     colors = {1: "tab:gray", 2: "tab:blue", 4: "tab:green", 8: "tab:red", 16: "tab:purple"}
@@ -118,6 +135,12 @@ def fig9_speedup(timings, profile, docs):
                 over = " (oversubscribed)" if t > 2 else ""
                 ax.scatter(*zip(*points), s=22, label=f"{t} thread{'s' if t > 1 else ''}, measured{over}",
                            facecolors="none" if t > 2 else colors[t], edgecolors=colors[t])
+        cores = threads_run[1].get("cpus", "?") if threads_run else None
+        for t in (2, 4, 8, 16):
+            points = many_core_speedups(threads_run, variant, t, cdt)
+            if points:
+                ax.scatter(*zip(*points), s=26, marker="^", facecolors=colors[t], edgecolors="k",
+                           linewidths=0.4, label=f"{t} threads, measured on {cores} cores")
         key = variant + ("_cdt" if cdt else "")
         for t in (2, 4, 8, 16):
             points = projected_speedups(profile, key, t)
@@ -161,6 +184,6 @@ def render(run, docs):
     return {
         "fig7": fig7_ears(run["ears"], docs),
         "fig8": fig8_time_per_vertex(timings, docs),
-        "fig9": fig9_speedup(timings, run["profile"], docs),
+        "fig9": fig9_speedup(timings, run["profile"], docs, run.get("threads")),
         "memory": fig_memory(timings, docs),
     }

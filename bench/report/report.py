@@ -12,6 +12,7 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 import figures  # noqa: E402
 import tables  # noqa: E402
+import threads  # noqa: E402
 from results import CDT_PEERS, PEERS, load_run  # noqa: E402
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -83,6 +84,22 @@ def hand_written(name):
         return f.read()
 
 
+def many_cores(threads_run):
+    """The newest bench/threads.sh run (a machine with many cores), when there is one."""
+    if not threads_run:
+        return ""
+    records, machine, path = threads_run
+    cpus = machine.get("cpus", "?")
+    return "\n".join([
+        f"\n## Measured on {cpus} cores (Fig. 9's triangles)\n",
+        f"`bash bench/threads.sh --pack DIR` on this machine, `bash DIR/run.sh OUT` on the other, "
+        f"`bash bench/threads.sh --report OUT` back here ([bench/threads.sh](../bench/threads.sh), "
+        f"`docs/results/{os.path.basename(path)}`): wall time of each configuration, medians of "
+        "interleaved rounds, one thread's baselines with `threads = 1`. Machine: "
+        + threads.document(records, machine),
+    ])
+
+
 def document(run, figs, stem):
     t = run["timings"]
     m = run["machine"]
@@ -126,6 +143,7 @@ def document(run, figs, stem):
         "[scaling.md](scaling.md), the one scaling table (`bash bench/run.sh scaling`).\n",
         tables.speedups(t),
         f"\n![Fig. 9]({figs['fig9']})\n" if figs.get("fig9") else "",
+        many_cores(run.get("threads")),
         "\n## Quality (Table 1)\n",
         f"Mean over the {common} inputs (of {total}: the corpus up to the mode's size limit and "
         "the families at 10k) that every configuration triangulated validly; the parallel "
@@ -159,6 +177,7 @@ def main():
     parser.add_argument("--docs", default="docs")
     args = parser.parse_args()
     run = load_run(args.stem)
+    run["threads"] = threads.latest(os.path.dirname(os.path.abspath(args.stem)))
     figs = figures.render(run, args.docs)
     text = document(run, figs, args.stem)
     with open(os.path.join(args.docs, "benchmarks.md"), "w") as f:

@@ -131,12 +131,15 @@ def noise(times):
 def machine_text(machine, records):
     cpus = machine.get("cpus", "?")
     header = next((r for r in records if "hardware_threads" in r), {})
-    load = machine.get("load_average_start", ["?"])[0], machine.get("load_average_end", ["?"])[0]
+    load = [machine.get(k, ["?"])[0] for k in ("load_average_start", "load_average_end")]
+    load = [f"{x:.1f}" if isinstance(x, (int, float)) else x for x in load]
+    built = machine.get("built_with", "")
     return (f"{cpus} hardware threads ({machine.get('cpu', '?')}), {machine.get('memory_gib', '?')} "
             f"GiB, {machine.get('os', '?')}, kernel {machine.get('kernel', '?')}; pear at "
-            f"{machine.get('commit', '?')}, {machine.get('started', '?')} to "
-            f"{machine.get('finished', '?')}, load average {load[0]} at the start and {load[1]} "
-            f"at the end; medians of {header.get('rounds', '?')} interleaved rounds (Eurasia: 3).")
+            f"{machine.get('commit', '?')}" + (f" built with {built}" if built else "") +
+            f", {machine.get('started', '?')} to {machine.get('finished', '?')}, load average "
+            f"{load[0]} at the start and {load[1]} at the end (the run's own threads); medians of "
+            f"{header.get('rounds', '?')} interleaved rounds (Eurasia: 3).")
 
 
 def document(records, machine):
