@@ -1,6 +1,6 @@
 // Constrained Delaunay triangulation by exact edge flips (paper §2.4): Lawson's flips on the
-// whole triangulation, or first inside breadth-first triangle sets in parallel tasks, then
-// across the sets' borders.
+// whole triangulation, or first inside triangle sets in parallel tasks (pieces of a
+// breadth-first walk, or runs of the clipper's order), then across the sets' borders.
 #include "delaunay.hpp"
 
 #include <algorithm>
@@ -49,9 +49,13 @@ void flip_sequentially(Mesh& mesh, std::size_t budget, const RunContext& ctx,
 }
 
 void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunContext& ctx,
-                  DelaunayStatistics& stats) {
+                  DelaunayStatistics& stats, std::size_t region_ordered) {
   TrianglePartition partition;
-  ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
+  const std::size_t count = mesh.triangles->size();
+  if (runs_make_sets(region_ordered, count, sets))
+    partition_in_runs(count, sets, ctx, partition);
+  else
+    ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
   std::vector<std::uint8_t> queued;
   ctx.run_serial("cdt flip sets: queue", [&] { queued.assign(mesh.twin.size(), 0); });
   std::vector<std::size_t> flips(sets, 0);
@@ -86,7 +90,8 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
 }  // namespace
 
 void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
-                   TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats) {
+                   TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats,
+                   std::size_t region_ordered) {
   stats = {};
   Mesh mesh;
   // Its phases are recorded as "cdt adjacency: ...".
@@ -97,7 +102,7 @@ void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
   const std::size_t sets =
       std::min<std::size_t>(ctx.partitions, triangles.size() / min_triangles_per_set);
   if (sets > 1)
-    flip_in_sets(mesh, static_cast<std::uint32_t>(sets), budget, ctx, stats);
+    flip_in_sets(mesh, static_cast<std::uint32_t>(sets), budget, ctx, stats, region_ordered);
   else
     flip_sequentially(mesh, budget, ctx, stats);
 }

@@ -11,10 +11,13 @@ namespace pear::detail {
 /// points, `points`) into the polygon's constrained Delaunay triangulation. The constraints are
 /// the polygon's ring edges; bridges and other diagonals are not. Runs in parallel when
 /// ctx.parallel(); the result depends on ctx.partitions at most through cocircular ties.
+/// `region_ordered`: how many of the first triangles the clipper emitted region by region
+/// (partition-and-cut's chains, one after another); when they are nearly all, the parallel
+/// flips' sets are runs of that order (see partition.hpp).
 /// Never inlined into the engine: the WebAssembly build compiles it for size and the engine for
 /// speed (src/meson.build).
 [[gnu::noinline]] void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
                                      TriangleList& triangles, const RunContext& ctx,
-                                     DelaunayStatistics& stats);
+                                     DelaunayStatistics& stats, std::size_t region_ordered = 0);
 
 }  // namespace pear::detail

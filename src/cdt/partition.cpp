@@ -46,4 +46,23 @@ void partition_triangles(const Mesh& mesh, std::uint32_t sets, TrianglePartition
       partition.part[partition.order[i]] = s;
 }
 
+bool runs_make_sets(std::size_t region_ordered, std::size_t count, std::uint32_t sets) {
+  return sets > 1 && region_ordered <= count &&
+         2 * sets * (count - region_ordered) <= count;  // at most half a set's share left over
+}
+
+void partition_in_runs(std::size_t count, std::uint32_t sets, const RunContext& ctx,
+                       TrianglePartition& partition) {
+  partition.part.resize(count);
+  partition.order.resize(count);
+  partition.begin.assign(sets + 1, 0);
+  for (std::uint32_t s = 0; s <= sets; ++s) partition.begin[s] = count * s / sets;
+  ctx.run_tasks("cdt partition: clip order", sets, [&](std::size_t s) {
+    for (std::size_t t = partition.begin[s]; t < partition.begin[s + 1]; ++t) {
+      partition.part[t] = static_cast<std::uint32_t>(s);
+      partition.order[t] = static_cast<std::uint32_t>(t);
+    }
+  });
+}
+
 }  // namespace pear::detail

@@ -4,11 +4,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/stage.hpp"
 #include "mesh.hpp"
 
 namespace pear::detail {
 
-/// The triangles cut into consecutive pieces of one breadth-first walk of the dual graph.
+/// The triangles cut into consecutive pieces of one breadth-first walk of the dual graph, or of
+/// the clipper's own order.
 struct TrianglePartition {
   std::vector<std::uint32_t> part;   ///< the set of each triangle
   std::vector<std::uint32_t> order;  ///< triangles in walk order
@@ -20,5 +22,17 @@ struct TrianglePartition {
 /// with two constraint edges, and cuts the walk into `sets` pieces of equal size. The paper found
 /// breadth-first sets less fragmented than depth-first ones: fewer border flips. Deterministic.
 void partition_triangles(const Mesh& mesh, std::uint32_t sets, TrianglePartition& partition);
+
+/// Whether `sets` runs of the triangles' own order make good sets: when all but at most half a
+/// set's share of the `count` triangles came out region by region (`region_ordered` first ones).
+/// Partition-and-cut's chains do (a coast: 99.8%); a sequential clip's order is by ear quality,
+/// scattered over the polygon (its spiral: 52% from chains, and runs of its order made 2.3
+/// million border flips against the walk's 81,000). Runs need no walk, which is serial.
+bool runs_make_sets(std::size_t region_ordered, std::size_t count, std::uint32_t sets);
+
+/// Set s is the triangles [count * s / sets, count * (s + 1) / sets): filled by ctx's tasks.
+/// Eurasia at 16 sets: 77,694 border flips against the walk's 303,300 and no 44 ms serial walk.
+void partition_in_runs(std::size_t count, std::uint32_t sets, const RunContext& ctx,
+                       TrianglePartition& partition);
 
 }  // namespace pear::detail

@@ -246,6 +246,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
                                 best_effort_vertex);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, shared_);
+      region_ordered_ = out.size();  // chain after chain: each chain's ears lie together
       break;
     case Algorithm::mark_and_cut:
       rest = mark_and_cut(boundary_, entry, ctx, out, shared_);
@@ -266,6 +267,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
                    std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   out.clear();
   findings_.clear();
+  region_ordered_ = 0;
   if (options.threads > max_threads) {
     diagnostics.push_back({Issue::invalid_options, 0, 0});
     return Status::invalid_input;
@@ -291,7 +293,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
   if (options.delaunay && status == Status::ok)
-    make_delaunay(caller_points(input), clean_, out, ctx, delaunay);
+    make_delaunay(caller_points(input), clean_, out, ctx, delaunay, region_ordered_);
   return status;
 }
 

@@ -93,7 +93,8 @@ class Engine {
   SharedPositions shared_;                 ///< what the clipper learns of repeated positions
   std::vector<std::uint8_t> bridge_ends_;  ///< shared_'s marks where no rings touch
   std::vector<std::uint32_t> cycles_;      ///< one node per region to clip, the main one first
-  Boundary part_;                          ///< a region copied out of boundary_
+  std::size_t region_ordered_ = 0;  ///< first triangles clipped region by region (for the CDT)
+  Boundary part_;                   ///< a region copied out of boundary_
   EarClipper clipper_;
   std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch

@@ -122,6 +122,36 @@ TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
   }
 }
 
+// Partition-and-cut emits its triangles chain after chain: the flips' sets are runs of that
+// order (no breadth-first walk) when nearly all came from chains, as on a star; a spiral's
+// chains leave half its triangles to the sequential finish, whose order is by ear quality, and
+// keeps the walk. Either way the CDT, and the same triangles on any thread count.
+TEST(Cdt, SetsAreRunsOfTheClipOrderOnlyWhereChainsEmittedNearlyAll) {
+  struct Case {
+    const char* kind;
+    bool runs;
+  };
+  for (const Case c : {Case{"star", true}, Case{"spiral", false}}) {
+    SCOPED_TRACE(c.kind);
+    const Polygon polygon = generate_polygon(c.kind, 30000, 3);
+    CdtCheck expect_cdt(polygon);
+    Triangles first;
+    for (unsigned threads : {1u, 2u, 4u}) {
+      RunProfile profile;
+      const auto result =
+          constrained_delaunay(polygon, Algorithm::partition_and_cut, threads, 8, &profile);
+      ASSERT_EQ(result.status, Status::ok);
+      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? 8u : 0u);
+      EXPECT_EQ(tasks_of(profile, "cdt partition"), c.runs ? 0u : 1u);
+      if (threads == 1) {
+        first = result.triangles;
+        expect_cdt(result.triangles);
+      }
+      EXPECT_EQ(result.triangles, first) << threads << " threads";
+    }
+  }
+}
+
 TEST(Cdt, WithoutDelaunayNoStatistics) {
   const auto result = triangulate(generate_polygon("star", 500, 3));
   EXPECT_EQ(result.delaunay.flips, 0u);

@@ -150,6 +150,45 @@ TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
   }
 }
 
+// Runs of the clip order are sets when at most half a set's share of the triangles came out
+// otherwise; each set is one run, the runs in order and of equal size give or take one.
+TEST(PartitionInRuns, OnlyWhenNearlyAllAreOrderedAndEqualRunsInOrder) {
+  EXPECT_TRUE(runs_make_sets(1000, 1000, 16));
+  EXPECT_TRUE(runs_make_sets(969, 1000, 16));   // 31 left: under half of 62.5
+  EXPECT_FALSE(runs_make_sets(968, 1000, 16));  // 32 left
+  EXPECT_FALSE(runs_make_sets(520, 1000, 16));  // a spiral's share
+  EXPECT_TRUE(runs_make_sets(750, 1000, 2));
+  EXPECT_FALSE(runs_make_sets(749, 1000, 2));
+  EXPECT_FALSE(runs_make_sets(1000, 1000, 1));
+  EXPECT_FALSE(runs_make_sets(1001, 1000, 4));
+  for (const std::size_t count : {std::size_t{16}, std::size_t{1003}, std::size_t{65536}}) {
+    for (const std::uint32_t sets : {2u, 7u, 16u}) {
+      SCOPED_TRACE(std::to_string(count) + " triangles, " + std::to_string(sets) + " sets");
+      for (const unsigned threads : {1u, 4u}) {
+        Workers workers;
+        const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                             .partitions = sets};
+        TrianglePartition partition;
+        partition_in_runs(count, sets, ctx, partition);
+        ASSERT_EQ(partition.sets(), sets);
+        ASSERT_EQ(partition.part.size(), count);
+        ASSERT_EQ(partition.order.size(), count);
+        EXPECT_EQ(partition.begin.front(), 0u);
+        EXPECT_EQ(partition.begin.back(), count);
+        for (std::uint32_t s = 0; s < sets; ++s) {
+          const std::size_t size = partition.begin[s + 1] - partition.begin[s];
+          EXPECT_LE(size, count / sets + 1);
+          EXPECT_GE(size, count / sets);
+          for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
+            ASSERT_EQ(partition.order[i], i);
+            ASSERT_EQ(partition.part[i], s);
+          }
+        }
+      }
+    }
+  }
+}
+
 TEST(MeshBuildErrors, AnEdgeWithThreeTrianglesIsNoTriangulation) {
   Triangulated t = triangulated({{{0, 0}, {4, 0}, {4, 4}, {0, 4}}});
   t.triangles.push_back(t.triangles.front());  // the same triangle twice: its edges thrice
