@@ -1,8 +1,10 @@
 // pear_threads: wall time of pear's parallel variants at several thread counts on the machine it
 // runs on (issue 27), each against the sequential engine, the sequential CDT and CGAL's CDT in
 // the same run. A shared or virtual machine drifts by tens of per cent over seconds, so the
-// configurations of one input run in interleaved rounds (each round in a rotated order, after
-// one untimed round) and each keeps the median of its rounds: ratios compare the same moments.
+// configurations of one input run in interleaved rounds (each round in its own shuffled order,
+// after one untimed round) and each keeps the median of its rounds: ratios compare the same
+// moments. Shuffled, not rotated: a rotation keeps each configuration after the same one, and
+// on a 16-core VM `top` ran up to 1.34x slower than `auto_t1`, the same computation.
 //
 //   pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] INPUT...
 //   (--rounds 0 with --phases: the profiled runs only)
@@ -19,6 +21,8 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <numeric>
+#include <random>
 #include <string>
 #include <thread>
 #include <vector>
@@ -134,9 +138,12 @@ Input load(const std::string& spec) {
 void time_rounds(bench::Json& out, const Input& input, const std::vector<Config>& all, int rounds) {
   std::vector<std::vector<double>> times(all.size());
   std::vector<std::size_t> triangles(all.size(), 0);
+  std::vector<std::size_t> order(all.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::mt19937 shuffle(2026);                      // the same orders in every run
   for (int round = -1; round < rounds; ++round) {  // round -1: untimed, warms memory and caches
-    for (std::size_t k = 0; k < all.size(); ++k) {
-      const std::size_t c = (k + static_cast<std::size_t>(round + 1)) % all.size();
+    std::shuffle(order.begin(), order.end(), shuffle);
+    for (const std::size_t c : order) {
       double seconds = 0;
       triangles[c] = run_once(input.polygon, all[c], seconds);
       if (round >= 0) times[c].push_back(seconds);
