@@ -30,12 +30,7 @@ class PearCdt final : public bench::PreparedPolygon {
     options_.heuristic = heuristic;
     options_.threads = threads;
     options_.algorithm = threads > 1 ? pear::Algorithm::automatic : pear::Algorithm::sequential;
-    if (threads > 1) {
-      static std::map<unsigned, std::unique_ptr<pear::Executor>> executors;
-      auto& executor = executors[threads];
-      if (!executor) executor = std::make_unique<pear::Executor>(threads);
-      options_.executor = executor.get();
-    }
+    options_.executor = bench::executor_for(threads);
   }
   std::size_t triangulate() override {
     result_ = pear::triangulate(polygon_, options_);

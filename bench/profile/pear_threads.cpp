@@ -45,16 +45,6 @@ struct Config {
   bool cgal = false;
 };
 
-/// One executor per thread count, made once: a user would keep one too, so thread start-up is
-/// not part of any time.
-pear::Executor* executor_for(unsigned threads) {
-  static std::map<unsigned, std::unique_ptr<pear::Executor>> executors;
-  if (threads <= 1) return nullptr;
-  auto& executor = executors[threads];
-  if (!executor) executor = std::make_unique<pear::Executor>(threads);
-  return executor.get();
-}
-
 std::vector<Config> configs(const std::vector<unsigned>& thread_counts) {
   using pear::Algorithm;
   // threads = 1: left at 0, the sequential engine still checks and bridges a large polygon in
@@ -73,14 +63,15 @@ std::vector<Config> configs(const std::vector<unsigned>& thread_counts) {
   for (const unsigned t : thread_counts) {
     const std::string suffix = "_t" + std::to_string(t);
     for (const auto& [name, algorithm] : variants)
-      all.push_back(
-          {name + suffix, t, {.algorithm = algorithm, .threads = t, .executor = executor_for(t)}});
+      all.push_back({name + suffix,
+                     t,
+                     {.algorithm = algorithm, .threads = t, .executor = bench::executor_for(t)}});
     all.push_back({"auto" + suffix + "_cdt",
                    t,
                    {.algorithm = Algorithm::automatic,
                     .delaunay = true,
                     .threads = t,
-                    .executor = executor_for(t)}});
+                    .executor = bench::executor_for(t)}});
   }
   return all;
 }

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -81,6 +83,14 @@ pear::Polygon load_polygon_file(const fs::path& path) {
 
 std::vector<pear::corpus::File> manifest(const fs::path& dir) {
   return pear::corpus::read_folder(dir.parent_path(), dir.filename().string()).files;
+}
+
+pear::Executor* executor_for(unsigned threads) {
+  static std::map<unsigned, std::unique_ptr<pear::Executor>> executors;
+  if (threads <= 1) return nullptr;
+  auto& executor = executors[threads];
+  if (!executor) executor = std::make_unique<pear::Executor>(threads);
+  return executor.get();
 }
 
 fs::path corpus_dir() {

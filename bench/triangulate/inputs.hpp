@@ -9,6 +9,7 @@
 
 #include "corpus.hpp"
 #include "pear/geometry.hpp"
+#include "pear/scheduler.hpp"
 
 namespace bench {
 
@@ -27,6 +28,11 @@ struct Input {
 /// The corpus is PEAR_BENCH_CORPUS, else the shared corpus (tests/support/corpus.hpp); inputs above
 /// PEAR_BENCH_MAX_VERTICES are left out. Messages about what is left out go to stderr.
 std::vector<Input> inputs();
+
+/// One executor per thread count, made once for the program: a user running many
+/// triangulations would share one too, so thread start-up is not part of any time. threads <= 1
+/// needs none (nullptr).
+pear::Executor* executor_for(unsigned threads);
 
 /// The corpus directory (PEAR_BENCH_CORPUS, else pear::corpus::shared_root()).
 std::filesystem::path corpus_dir();

@@ -4,6 +4,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "inputs.hpp"
 #include "pear/pear.hpp"
 #include "pear/predicates.hpp"
 #include "pear/scheduler.hpp"
@@ -11,16 +12,6 @@
 
 namespace bench {
 namespace {
-
-/// One executor per thread count, made once: a user running many triangulations would share one
-/// too, so thread start-up is not part of the time. threads = 1 needs none.
-pear::Executor* executor_for(unsigned threads) {
-  static std::map<unsigned, std::unique_ptr<pear::Executor>> executors;
-  if (threads <= 1) return nullptr;
-  auto& executor = executors[threads];
-  if (!executor) executor = std::make_unique<pear::Executor>(threads);
-  return executor.get();
-}
 
 class PearPolygon final : public PreparedPolygon {
  public:
