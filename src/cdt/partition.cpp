@@ -47,8 +47,7 @@ void partition_triangles(const Mesh& mesh, std::uint32_t sets, TrianglePartition
 }
 
 bool runs_make_sets(std::size_t region_ordered, std::size_t count, std::uint32_t sets) {
-  return sets > 1 && region_ordered <= count &&
-         2 * sets * (count - region_ordered) <= count;  // at most half a set's share left over
+  return sets > 1 && region_ordered <= count && 32 * (count - region_ordered) <= count;
 }
 
 void partition_in_runs(std::size_t count, std::uint32_t sets, const RunContext& ctx,

@@ -129,19 +129,21 @@ TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
 TEST(Cdt, SetsAreRunsOfTheClipOrderOnlyWhereChainsEmittedNearlyAll) {
   struct Case {
     const char* kind;
+    unsigned partitions;
     bool runs;
   };
-  for (const Case c : {Case{"star", true}, Case{"spiral", false}}) {
-    SCOPED_TRACE(c.kind);
+  for (const Case c : {Case{"star", 8, true}, Case{"spiral", 8, false}, Case{"star", 2, true},
+                       Case{"spiral", 2, false}}) {
+    SCOPED_TRACE(std::string(c.kind) + ", " + std::to_string(c.partitions) + " partitions");
     const Polygon polygon = generate_polygon(c.kind, 30000, 3);
     CdtCheck expect_cdt(polygon);
     Triangles first;
     for (unsigned threads : {1u, 2u, 4u}) {
       RunProfile profile;
-      const auto result =
-          constrained_delaunay(polygon, Algorithm::partition_and_cut, threads, 8, &profile);
+      const auto result = constrained_delaunay(polygon, Algorithm::partition_and_cut, threads,
+                                               c.partitions, &profile);
       ASSERT_EQ(result.status, Status::ok);
-      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? 8u : 0u);
+      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? c.partitions : 0u);
       EXPECT_EQ(tasks_of(profile, "cdt partition"), c.runs ? 0u : 1u);
       if (threads == 1) {
         first = result.triangles;

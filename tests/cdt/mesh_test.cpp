@@ -150,17 +150,17 @@ TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
   }
 }
 
-// Runs of the clip order are sets when at most half a set's share of the triangles came out
-// otherwise; each set is one run, the runs in order and of equal size give or take one.
+// Runs of the clip order are sets when at most 1/32 of the triangles came out otherwise, at any
+// number of sets; each set is one run, the runs in order and of equal size give or take one.
 TEST(PartitionInRuns, OnlyWhenNearlyAllAreOrderedAndEqualRunsInOrder) {
-  EXPECT_TRUE(runs_make_sets(1000, 1000, 16));
-  EXPECT_TRUE(runs_make_sets(969, 1000, 16));   // 31 left: under half of 62.5
-  EXPECT_FALSE(runs_make_sets(968, 1000, 16));  // 32 left
-  EXPECT_FALSE(runs_make_sets(520, 1000, 16));  // a spiral's share
-  EXPECT_TRUE(runs_make_sets(750, 1000, 2));
-  EXPECT_FALSE(runs_make_sets(749, 1000, 2));
-  EXPECT_FALSE(runs_make_sets(1000, 1000, 1));
-  EXPECT_FALSE(runs_make_sets(1001, 1000, 4));
+  for (const std::uint32_t sets : {2u, 3u, 16u}) {
+    EXPECT_TRUE(runs_make_sets(1024, 1024, sets));
+    EXPECT_TRUE(runs_make_sets(992, 1024, sets));   // 32 left: 1/32
+    EXPECT_FALSE(runs_make_sets(991, 1024, sets));  // 33 left
+    EXPECT_FALSE(runs_make_sets(800, 1024, sets));  // a spiral's chains at 2 partitions
+  }
+  EXPECT_FALSE(runs_make_sets(1024, 1024, 1));
+  EXPECT_FALSE(runs_make_sets(1025, 1024, 4));
   for (const std::size_t count : {std::size_t{16}, std::size_t{1003}, std::size_t{65536}}) {
     for (const std::uint32_t sets : {2u, 7u, 16u}) {
       SCOPED_TRACE(std::to_string(count) + " triangles, " + std::to_string(sets) + " sets");
