@@ -59,6 +59,16 @@ void list_once(const Mesh& mesh, std::uint32_t h, RoundMarks& marks,
   list.push_back(h);
 }
 
+/// A round's serial step: recorded as a phase when the round is large (its tasks are), else run
+/// as part of the small rounds' one phase.
+template <class Step>
+void serial_step(const RunContext& ctx, bool parallel, const char* phase, Step&& step) {
+  if (parallel)
+    ctx.run_serial(phase, step);
+  else
+    step();
+}
+
 /// Runs body(begin, end) over [0, count) in chunks: as parallel tasks when the round is large,
 /// else right here (the result is the same either way).
 template <class Body>
@@ -86,24 +96,20 @@ std::size_t flip_round(Mesh& mesh, std::vector<std::uint32_t>& suspects, RoundMa
   std::vector<std::uint32_t>&picked = marks.picked, &waiting = marks.waiting;
   picked.clear();
   waiting.clear();
-  const auto pick_all = [&] {
+  serial_step(ctx, parallel, "cdt border round: pick", [&] {
     for (std::size_t i = 0; i < suspects.size(); ++i) {
       if (!needs[i]) continue;
       const bool independent = picked.size() < budget && pick(mesh, suspects[i], marks);
       (independent ? picked : waiting).push_back(suspects[i]);
     }
-  };
-  if (parallel)
-    ctx.run_serial("cdt border round: pick", pick_all);
-  else
-    pick_all();
+  });
   for_chunks(ctx, parallel, "cdt border round: flip", picked.size(),
              [&](std::size_t begin, std::size_t end) {
                for (std::size_t i = begin; i < end; ++i) flip(mesh, picked[i], FlipScope{});
              });
   suspects.clear();
   if (picked.empty()) return 0;  // nothing to flip (or no budget left): done
-  const auto list_next = [&] {
+  serial_step(ctx, parallel, "cdt border round: list", [&] {
     for (std::uint32_t h : waiting) list_once(mesh, h, marks, suspects);
     for (std::uint32_t h : picked) {
       const std::uint32_t g = mesh.twin[h];
@@ -111,11 +117,7 @@ std::size_t flip_round(Mesh& mesh, std::vector<std::uint32_t>& suspects, RoundMa
                               next_half_edge(g), next_half_edge(next_half_edge(g))})
         list_once(mesh, e, marks, suspects);
     }
-  };
-  if (parallel)
-    ctx.run_serial("cdt border round: list", list_next);
-  else
-    list_next();
+  });
   return picked.size();
 }
 

@@ -25,4 +25,15 @@ void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std
   }
 }
 
+void fill_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+                  SharedPositions shared, std::vector<std::uint8_t>& pinch,
+                  std::vector<std::uint32_t>& table) {
+  if (shared.marks != nullptr && shared.marks->size() == b.size())
+    pinch = *shared.marks;
+  else if (shared.none)
+    pinch.assign(b.size(), 0);
+  else
+    find_pinches(b, alive, live, pinch, table);
+}
+
 }  // namespace pear::detail

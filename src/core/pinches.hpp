@@ -37,4 +37,10 @@ struct SharedPositions {
 void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
                   std::vector<std::uint8_t>& pinch, std::vector<std::uint32_t>& table);
 
+/// pinch as find_pinches sets it, taken from `shared` where the pipeline already knows the
+/// repeated positions (its marks for every node of b, or none at all): no hashing then.
+void fill_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+                  SharedPositions shared, std::vector<std::uint8_t>& pinch,
+                  std::vector<std::uint32_t>& table);
+
 }  // namespace pear::detail

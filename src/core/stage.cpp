@@ -9,19 +9,20 @@ void RunContext::run_profiled(const char* phase, std::size_t count, TaskFunction
   };
   const std::size_t recorded = profile->phases.size();
   profile->phases.push_back({phase, std::vector<double>(count, 0.0)});
-  std::vector<double>* times = &profile->phases.back().task_seconds;
+  // The times' buffer, not the vector: a task that records phases of its own (nested runs) may
+  // move the vector, never its buffer.
+  double* const times = profile->phases.back().task_seconds.data();
   const auto timed = [&](std::size_t i) {
     const auto start = Clock::now();
     task(i);
-    (*times)[i] = since(start);
+    times[i] = since(start);
   };
   const auto start = Clock::now();
   if (parallel() && count > 1)
     runner->run(count, timed);
   else
     for (std::size_t i = 0; i < count; ++i) timed(i);
-  // By index: a task may record phases of its own (nested runs) and move the vector.
-  profile->phases[recorded].wall_seconds = since(start);
+  profile->phases[recorded].wall_seconds = since(start);  // by index, for the same reason
 }
 
 }  // namespace pear::detail

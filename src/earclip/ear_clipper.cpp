@@ -44,15 +44,7 @@ void EarClipper::classify(std::uint32_t entry, SharedPositions shared) {
 /// A node that shares its position with one of another cycle, or one that a spike took away,
 /// is marked too: an extra hashed node can only make an ear test stricter.
 void EarClipper::mark_pinches(SharedPositions shared) {
-  if (shared.marks != nullptr && shared.marks->size() == b_->size()) {
-    pinch_ = *shared.marks;
-    return;
-  }
-  if (shared.none) {
-    pinch_.assign(b_->size(), 0);
-    return;
-  }
-  find_pinches(*b_, alive_, remaining_, pinch_, position_table_);
+  fill_pinches(*b_, alive_, remaining_, shared, pinch_, position_table_);
 }
 
 const std::vector<std::uint8_t>* EarClipper::shared_marks(std::uint32_t entry,

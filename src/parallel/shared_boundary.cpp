@@ -24,14 +24,8 @@ std::size_t SharedBoundary::start(Boundary& boundary, std::uint32_t entry, const
       v = b->next[v];
     } while (v != entry);
     // Known from the check and the bridges (the engine's marks): no hashing of every node.
-    if (shared.marks != nullptr && shared.marks->size() == size) {
-      pinch = *shared.marks;
-    } else if (shared.none) {
-      pinch.assign(size, 0);
-    } else {
-      std::vector<std::uint32_t> table;
-      find_pinches(*b, alive, order.size(), pinch, table);
-    }
+    std::vector<std::uint32_t> table;
+    fill_pinches(*b, alive, order.size(), shared, pinch, table);
   });
   ctx.run_tasks("classify", ctx.partitions, [&](std::size_t part) {
     const std::size_t first = part_begin(order.size(), ctx.partitions, part);
