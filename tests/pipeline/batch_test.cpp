@@ -175,8 +175,9 @@ TEST(Batch, OffsetsAtTheEndsOfInt64AreInvalidNotOverflow) {
         const bool good = ring_offsets[p] >= 0 && ring_offsets[p] < ring_offsets[p + 1] &&
                           ring_offsets[p + 1] <= 7;
         EXPECT_EQ(batch.status[p], good ? Status::ok : Status::invalid_input) << "polygon " << p;
-        if (!good)
+        if (!good) {
           EXPECT_EQ(batch.diagnostics[batch.diagnostic_offsets[p]].issue, Issue::invalid_offsets);
+        }
       }
       EXPECT_EQ(batch.triangle_offsets.back(), static_cast<std::int64_t>(batch.triangles.size()));
     }
