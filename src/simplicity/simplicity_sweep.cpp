@@ -120,24 +120,45 @@ std::optional<std::uint32_t> sweep(const RingEdges& edges, std::span<const std::
 std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::uint32_t slabs,
                                                    const RunContext& ctx) {
   const std::uint32_t n = edges.size();
-  std::vector<std::vector<std::uint32_t>> lists(slabs);
+  std::vector<double> borders(slabs - 1);
   ctx.run_serial("check simplicity: slabs", [&] {
     std::vector<double> left(n);
     for (std::uint32_t e = 0; e < n; ++e) left[e] = edges.boxes[e].x0;
-    std::vector<double> borders;
-    for (std::uint32_t s = 1; s < slabs; ++s) {
-      const auto at = left.begin() + static_cast<std::ptrdiff_t>(std::size_t{s} * n / slabs);
-      std::nth_element(left.begin(), at, left.end());
-      borders.push_back(*at);
-    }
-    detail::sort(borders.begin(), borders.end());
-    const auto slab_of = [&](double x) {
-      return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
-                                      borders.begin());
+    // Border s at the quantile s * n / slabs, each selected within the range its neighbours
+    // left: n log(slabs) steps, not n per border.
+    const auto place = [&](auto&& self, std::uint32_t low, std::uint32_t high, auto first,
+                           auto last) -> void {
+      if (high - low < 2) return;
+      const std::uint32_t mid = low + (high - low) / 2;
+      const auto at = left.begin() + static_cast<std::ptrdiff_t>(std::size_t{mid} * n / slabs);
+      std::nth_element(first, at, last);
+      borders[mid - 1] = *at;
+      self(self, low, mid, first, at);
+      self(self, mid, high, at + 1, last);
     };
-    for (std::uint32_t e = 0; e < n; ++e)
+    place(place, 0, slabs, left.begin(), left.end());
+  });
+  const auto slab_of = [&](double x) {
+    return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
+                                    borders.begin());
+  };
+  // Each chunk of edges lists its own per slab; a slab's list joins them in chunk order, so it
+  // holds its edges in index order whatever the thread count.
+  const std::size_t chunk = 1 << 15, chunks = (n + chunk - 1) / chunk;
+  std::vector<std::vector<std::vector<std::uint32_t>>> parts(
+      chunks, std::vector<std::vector<std::uint32_t>>(slabs));
+  ctx.run_tasks("check simplicity: slab lists", chunks, [&](std::size_t c) {
+    const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(n, (c + 1) * chunk));
+    for (auto e = static_cast<std::uint32_t>(c * chunk); e < end; ++e)
       for (std::size_t s = slab_of(edges.boxes[e].x0); s <= slab_of(edges.boxes[e].x1); ++s)
-        lists[s].push_back(e);
+        parts[c][s].push_back(e);
+  });
+  std::vector<std::vector<std::uint32_t>> lists(slabs);
+  ctx.run_tasks("check simplicity: slab lists, join", slabs, [&](std::size_t s) {
+    std::size_t size = 0;
+    for (const auto& part : parts) size += part[s].size();
+    lists[s].reserve(size);
+    for (const auto& part : parts) lists[s].insert(lists[s].end(), part[s].begin(), part[s].end());
   });
   return lists;
 }

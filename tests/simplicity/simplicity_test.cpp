@@ -347,6 +347,38 @@ TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   }
 }
 
+/// Past two partitions the grid goes first; where it gives up (a comb of 100,000 vertices: its
+/// teeth are long against the cells) the runs decide before any sweep: the same answer as the
+/// sweep alone, valid or with two teeth crossed, and no slab swept.
+TEST(Simplicity, RunsDecideWhereTheGridGivesUpPastTwoPartitions) {
+  Polygon comb = generate_polygon("comb", 100000, 3);
+  SimplicityCheck check;
+  for (bool crossed : {false, true}) {
+    SCOPED_TRACE(crossed ? "crossed" : "valid");
+    Polygon polygon = comb;
+    if (crossed) std::swap(polygon[0][2001], polygon[0][70001]);
+    const CleanPolygon clean = cleaned(polygon);
+    RunProfile profile;
+    const Verdict verdict =
+        check.check(clean, RunContext{.partitions = 4, .profile = &profile}, true);
+    const auto by_sweep = check.find_violation(clean, RunContext{}, Method::sweep_only);
+    ASSERT_EQ(verdict.violation.has_value(), crossed);
+    ASSERT_EQ(by_sweep.has_value(), crossed);
+    if (crossed) {
+      EXPECT_TRUE(check.unresolvable_conflict_at(clean, *verdict.violation, RunContext{}));
+    } else {
+      EXPECT_EQ(verdict.touching, Verdict::Touching::no);  // the runs know; the grid would not
+    }
+    std::vector<std::string> phases;
+    for (const auto& phase : profile.phases) phases.push_back(phase.name);
+    EXPECT_NE(std::find(phases.begin(), phases.end(), "check simplicity: root grid count"),
+              phases.end());
+    EXPECT_NE(std::find(phases.begin(), phases.end(), "check simplicity"), phases.end());
+    EXPECT_EQ(std::find(phases.begin(), phases.end(), "check simplicity: sweep slabs"),
+              phases.end());
+  }
+}
+
 /// The T-junctions by brute force: a conflict when two edges cross, overlap or fold back; else
 /// every (edge, vertex strictly inside it), sorted along the edge, the smallest vertex per point.
 TJunctionSearch t_junctions_by_brute_force(const CleanPolygon& polygon) {
