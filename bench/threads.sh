@@ -40,7 +40,7 @@ python=${PYTHON:-python3}
 "$python" -c 'import json' 2>/dev/null || python=/usr/bin/python3
 
 if [[ -n $report ]]; then
-  stem="$root/docs/results/$(date -u +%Y-%m-%d)-threads"
+  stem="$root/docs/results/$(date -u +%Y-%m-%dT%H%M)-threads"  # sorts after a day's earlier runs
   cp "$report/threads.json" "$stem.json"
   cp "$report/machine.json" "$stem-machine.json"
   "$python" "$root/bench/report/threads.py" "$stem.json"
