@@ -2,7 +2,7 @@
 # ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs) and of the
 # parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads), hole
 # bridging in parts (the searches as tasks at 2-8 threads) and the parallel CDT's cases (flips in
-# breadth-first sets, border rounds, the bucketed adjacency build).
+# breadth-first sets, border rounds, the bucketed adjacency build) and cleaning in parallel passes.
 # Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
 # The sanitizer build is separate: only the library and the scheduler tests are compiled.
 set -euo pipefail
@@ -26,7 +26,8 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/parallel/divide_conquer_test \
   tests/cdt/cdt_test \
   tests/cdt/cdt_mesh_test \
-  tests/pipeline/batch_test
+  tests/pipeline/batch_test \
+  tests/pipeline/clean_test
 
 # halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
@@ -40,3 +41,4 @@ meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 "$build/tests/cdt/cdt_test" --gtest_filter='Cdt.*'
 "$build/tests/cdt/cdt_mesh_test" --gtest_filter='Families/MeshBuild.*/0'
 "$build/tests/pipeline/batch_test" --gtest_filter='Batch.SameAsOneCall*:Batch.OnTheCallersExecutor'
+"$build/tests/pipeline/clean_test"

@@ -8,10 +8,18 @@
 
 namespace pear::detail {
 
+/// From this many points, when ctx has threads or partitions, the common case (every coordinate
+/// in range, no spike, no ring dropped) is cleaned in parallel passes on ctx's runner; an input
+/// that is not that case is cleaned again serially, which names what it finds. The same result
+/// either way.
+inline constexpr std::size_t clean_in_parts_from = std::size_t{1} << 17;
+
 /// Checks the input and fills `out`. Returns Status::invalid_input (with an error diagnostic
 /// naming ring and vertex) when nothing can be triangulated; warnings are appended too.
+/// Records its phases in ctx's profile. `in_parts_from`: for tests.
 Status clean_polygon(const InputPolygon& in, CleanPolygon& out,
-                     std::vector<Diagnostic>& diagnostics);
+                     std::vector<Diagnostic>& diagnostics, const RunContext& ctx = {},
+                     std::size_t in_parts_from = clean_in_parts_from);
 
 /// `in` with every edge split at the vertices lying inside it (sorted along each edge, as
 /// SimplicityCheck::find_t_junctions gives them): a copy of such a vertex, with its caller's

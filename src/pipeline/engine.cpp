@@ -274,14 +274,13 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   }
   RunContext ctx;
   ctx.profile = options.profile;
-  Status cleaned = Status::ok;
-  ctx.run_serial("clean", [&] { cleaned = clean_polygon(input, clean_, diagnostics); });
-  if (cleaned != Status::ok) return cleaned;
   // Clamped before any stage sizes its work by it (a million parts once meant a million queues).
   ctx.partitions = std::min(options.partitions ? options.partitions : Workers::concurrency(options),
                             max_partitions);
-  if (clean_.points.size() >= parallel_threshold || !sequential(options.algorithm))
+  if (input.size() >= parallel_threshold || !sequential(options.algorithm))
     ctx.runner = workers_.runner(options);
+  const Status cleaned = clean_polygon(input, clean_, diagnostics, ctx);
+  if (cleaned != Status::ok) return cleaned;
   check(options.check_simplicity, ctx);
   bridge(options.check_simplicity, ctx);
   out.reserve(boundary_.size());
