@@ -27,6 +27,27 @@ std::uint32_t slab_count(std::uint32_t n, std::uint32_t partitions) {
 
 }  // namespace
 
+/// One pass, no branch but at the ends of the rings.
+std::size_t x_reversals(const CleanPolygon& polygon) {
+  const Point* pts = polygon.points.data();
+  std::size_t reversals = 0;
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
+    const auto direction = [](double dx) { return (dx > 0) - (dx < 0); };
+    // Entering the ring from its last edge that is not vertical: a cycle turns back evenly.
+    int before = direction(pts[first].x - pts[last].x);
+    for (std::uint32_t i = last; before == 0 && i > first; --i)
+      before = direction(pts[i].x - pts[i - 1].x);
+    for (std::uint32_t i = first; i < last; ++i) {
+      const int d = direction(pts[i + 1].x - pts[i].x);
+      reversals += d * before < 0;
+      before = d != 0 ? d : before;
+    }
+    reversals += direction(pts[first].x - pts[last].x) * before < 0;
+  }
+  return reversals;
+}
+
 /// Two edges that are not neighbours conflict when they cross properly, when an endpoint of
 /// one lies inside the other, or when they are the same segment.
 bool RingEdges::separate_edges_conflict(std::uint32_t e, std::uint32_t f) const {
@@ -220,28 +241,6 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
 }
 
 namespace {
-
-/// How often the rings turn back in x (about the number of runs monotone in x): one pass, no
-/// branch but at the ends of the rings.
-std::size_t x_reversals(const CleanPolygon& polygon) {
-  const Point* pts = polygon.points.data();
-  std::size_t reversals = 0;
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
-    const auto direction = [](double dx) { return (dx > 0) - (dx < 0); };
-    // Entering the ring from its last edge that is not vertical: a cycle turns back evenly.
-    int before = direction(pts[first].x - pts[last].x);
-    for (std::uint32_t i = last; before == 0 && i > first; --i)
-      before = direction(pts[i].x - pts[i - 1].x);
-    for (std::uint32_t i = first; i < last; ++i) {
-      const int d = direction(pts[i + 1].x - pts[i].x);
-      reversals += d * before < 0;
-      before = d != 0 ? d : before;
-    }
-    reversals += direction(pts[first].x - pts[last].x) * before < 0;
-  }
-  return reversals;
-}
 
 /// Whether the runs monotone in x are worth trying past chains_limit: not when they are short
 /// (fractals, stars, grids of small holes: 1.5-2.3 edges a run), nor when there are more than a

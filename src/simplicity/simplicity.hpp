@@ -140,6 +140,10 @@ struct Verdict {
   std::optional<MisplacedHole> misplaced;
 };
 
+/// How often the rings turn back in x: about the number of runs of edges monotone in x (n over
+/// 1.5-2.3 on fractals, stars and grids of holes, 5-15 on coastlines, a few on combs and spirals).
+std::size_t x_reversals(const CleanPolygon& polygon);
+
 class SimplicityCheck {
  public:
   /// Up to this many edges, every pair is tested by branch-free box tests; up to

@@ -154,6 +154,34 @@ TEST(Cdt, SetsAreRunsOfTheClipOrderOnlyWhereChainsEmittedNearlyAll) {
   }
 }
 
+/// With `delaunay` the clip only picks where the flips start: from `fast` where the outline is
+/// runs of 3 to 64 edges monotone in x (random polygons with holes: 4, like coastlines), from the
+/// heuristic asked for where they are shorter (random polygons: 2.2) or below 20,000 nodes.
+/// Either way the CDT that CGAL gives.
+TEST(Cdt, FlipsStartFromFastWhereRunsAreCoastLike) {
+  struct Case {
+    const char* kind;
+    std::size_t vertices;
+    bool from_fast;
+  };
+  for (const Case c : {Case{"random-holes", 30000, true}, Case{"random", 30000, false},
+                       Case{"random-holes", 5000, false}}) {
+    SCOPED_TRACE(std::string(c.kind) + " " + std::to_string(c.vertices));
+    const Polygon polygon = generate_polygon(c.kind, c.vertices, 9);
+    Options options{.algorithm = Algorithm::sequential, .delaunay = true, .threads = 1};
+    const auto from_top = triangulate(polygon, options);
+    options.heuristic = EarHeuristic::fast;
+    const auto from_fast = triangulate(polygon, options);
+    ASSERT_EQ(from_top.status, Status::ok);
+    ASSERT_EQ(from_fast.status, Status::ok);
+    // The same start gives the same flips in the same order: the same list.
+    EXPECT_EQ(from_top.triangles == from_fast.triangles, c.from_fast);
+    EXPECT_EQ(from_top.delaunay.flips == from_fast.delaunay.flips, c.from_fast);
+    CdtCheck expect_cdt(polygon);
+    expect_cdt(from_top.triangles);
+  }
+}
+
 TEST(Cdt, WithoutDelaunayNoStatistics) {
   const auto result = triangulate(generate_polygon("star", 500, 3));
   EXPECT_EQ(result.delaunay.flips, 0u);
