@@ -123,7 +123,9 @@ void expect_as_serial(const Input& input, bool parts) {
     expect_same(got, expected);
     const bool decided_in_parts = parts && ctx.partitions > 1;
     EXPECT_EQ(has(got.phases, "clean"), !decided_in_parts);
-    if (decided_in_parts) EXPECT_TRUE(has(got.phases, "clean: copy"));
+    if (decided_in_parts) {
+      EXPECT_TRUE(has(got.phases, "clean: copy"));
+    }
   }
 }
 
