@@ -15,19 +15,45 @@ namespace {
 /// and no stage asks for threads unless the caller chose a parallel algorithm.
 constexpr std::size_t parallel_threshold = 20'000;
 
-/// `automatic` depends on the size and the partitions, never on the threads: the output does not
-/// change with the machine. With two partitions divide-and-conquer's one split line halves the
-/// work and keeps `top`'s quality: it measured fastest at 2 threads on every family and was never
-/// slower than sequential. With more, its recursion costs work on stars and combs while
-/// partition-and-cut's chains keep scaling (docs/parallel.md, "What automatic picks").
+/// What `automatic` and the CDT's start read from the outline: its size and how often its rings
+/// turn back in x (x_reversals: about the runs of edges monotone in x), counted once, only
+/// when asked.
+class Outline {
+ public:
+  explicit Outline(const CleanPolygon& clean) : clean_(clean) {}
+  std::size_t nodes() const { return clean_.points.size(); }
+  std::size_t runs() {
+    if (runs_ == unknown) runs_ = x_reversals(clean_);
+    return runs_;
+  }
+  /// Runs of 3 to 64 edges: coastlines (5-15), random polygons with holes (4).
+  bool coast_like() { return runs() * 3 <= nodes() && runs() * 64 >= nodes(); }
+  /// More than 16 runs of over 64 edges: walls wound round each other (a spiral: 82 runs of
+  /// 1,220 edges; a comb has 2, fractals, stars and hole grids runs of 1.5-2.3 edges).
+  bool corridors() { return runs() > 16 && runs() * 64 < nodes(); }
+
+ private:
+  static constexpr std::size_t unknown = SIZE_MAX;
+  const CleanPolygon& clean_;
+  std::size_t runs_ = unknown;
+};
+
+/// `automatic` depends on the outline and the partitions, never on the threads: the output does
+/// not change with the machine. With two partitions divide-and-conquer's one split line halves
+/// the work and keeps `top`'s quality: it measured fastest at 2 threads on every family and was
+/// never slower than sequential. With more, its recursion costs work on stars and combs while
+/// partition-and-cut's chains keep scaling, except along corridors, whose two walls fall in
+/// different chains: there divide-and-conquer's slabs (the spiral on 16 cores at 4-16 threads:
+/// 21-26 ms against 45-54; docs/parallel.md, "What automatic picks").
 /// A polygon found not simple gets the sequential engine's best effort: the parallel variants
 /// need a simple boundary and, after clipping their parts, fall back to it (a 84k-vertex
 /// country: 26 ms of parts thrown away, slower at 2 threads than at 1).
-Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions,
-                  bool not_simple) {
+Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions, bool not_simple,
+                  Outline& outline) {
   if (requested != Algorithm::automatic) return requested;
   if (partitions < 2 || nodes < parallel_threshold || not_simple) return Algorithm::sequential;
-  return partitions == 2 ? Algorithm::divide_and_conquer : Algorithm::partition_and_cut;
+  if (partitions == 2 || outline.corridors()) return Algorithm::divide_and_conquer;
+  return Algorithm::partition_and_cut;
 }
 
 /// With `delaunay` the clip only makes the triangulation the flips start from, and the CDT is
@@ -35,14 +61,12 @@ Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitio
 /// (Australia: 116 ms against `fast`'s 70) for fewer flips than that saves; outlines of short
 /// runs monotone in x (fractals, stars, grids of holes: under 3 edges a run) or of a few long
 /// ones (spirals, combs) flip far more from `fast` (the spiral 2.3x the CDT's time). So `fast`
-/// from 20,000 nodes where runs are 3 to 64 edges long (the coasts 5-15, random polygons with
-/// holes 4): the sequential CDT on Australia 1.60x, Greenland 1.54x, random holes 1.32x faster.
-EarHeuristic start_of_flips(const Options& options, const CleanPolygon& clean) {
+/// from 20,000 nodes where the outline is coast-like: the sequential CDT on Australia 1.60x,
+/// Greenland 1.54x, random holes 1.32x faster.
+EarHeuristic start_of_flips(const Options& options, Outline& outline) {
   if (!options.delaunay || options.heuristic != EarHeuristic::top) return options.heuristic;
-  const std::size_t n = clean.points.size();
-  if (n < parallel_threshold) return options.heuristic;
-  const std::size_t runs = x_reversals(clean);
-  return runs * 3 <= n && runs * 64 >= n ? EarHeuristic::fast : options.heuristic;
+  if (outline.nodes() < parallel_threshold) return options.heuristic;
+  return outline.coast_like() ? EarHeuristic::fast : options.heuristic;
 }
 
 bool sequential(Algorithm algorithm) {
@@ -300,11 +324,12 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   check(options.check_simplicity, ctx);
   bridge(options.check_simplicity, ctx);
   out.reserve(boundary_.size());
+  Outline outline(clean_);
   const Algorithm algorithm =
-      resolve(options.algorithm, boundary_.size(), ctx.partitions, found_not_simple());
+      resolve(options.algorithm, boundary_.size(), ctx.partitions, found_not_simple(), outline);
   std::uint32_t best_effort_vertex = 0;
   Options clip_options = options;
-  clip_options.heuristic = start_of_flips(options, clean_);
+  clip_options.heuristic = start_of_flips(options, outline);
   if (!clip(algorithm, clip_options, ctx, out, best_effort_vertex) && !found_not_simple())
     findings_.push_back(why_not_valid(options.check_simplicity, best_effort_vertex));
   const Status status = report(input, diagnostics);

@@ -83,6 +83,32 @@ TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
   EXPECT_FALSE(same(4, Algorithm::divide_and_conquer));
 }
 
+// Past two partitions automatic takes divide-and-conquer along corridors (more than 16 runs of
+// edges monotone in x, over 64 edges a run: a spiral's walls) and partition-and-cut elsewhere
+// (a comb: 2 runs; the star: runs of 1.5 edges).
+TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
+  struct Case {
+    const char* kind;
+    Algorithm expected, other;
+  };
+  for (const Case c : {Case{"spiral", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
+                       Case{"comb", Algorithm::partition_and_cut, Algorithm::divide_and_conquer},
+                       Case{"star", Algorithm::partition_and_cut, Algorithm::divide_and_conquer}}) {
+    SCOPED_TRACE(c.kind);
+    const Polygon polygon = generate_polygon(c.kind, 60000, 3);
+    for (unsigned partitions : {4u, 8u}) {
+      const auto chosen = triangulate(polygon, {.threads = 1, .partitions = partitions});
+      const auto expected =
+          triangulate(polygon, {.algorithm = c.expected, .threads = 2, .partitions = partitions});
+      const auto other =
+          triangulate(polygon, {.algorithm = c.other, .threads = 2, .partitions = partitions});
+      ASSERT_EQ(chosen.status, Status::ok);
+      EXPECT_EQ(chosen.triangles, expected.triangles) << partitions << " partitions";
+      EXPECT_NE(chosen.triangles, other.triangles) << partitions << " partitions";
+    }
+  }
+}
+
 // A polygon the check finds not simple: automatic goes straight to the sequential engine's
 // best effort at every partition count, instead of clipping parts in parallel and falling back
 // (the Natural Earth land mass land_0004 ran slower at 2 threads than at 1).
