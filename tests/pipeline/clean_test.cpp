@@ -15,6 +15,7 @@
 #include "clean/clean.hpp"
 #include "pear/generate.hpp"
 #include "pipeline/threading.hpp"
+#include "run_contexts.hpp"
 
 namespace pear::detail {
 namespace {
@@ -97,17 +98,8 @@ bool has(const std::vector<std::string>& phases, const char* name) {
 }
 
 /// Threads 1, 2 and 4 with as many partitions, and one thread with 4 partitions.
-struct Contexts {
-  std::vector<std::unique_ptr<Workers>> workers;
-  std::vector<RunContext> list;
-  Contexts() {
-    for (unsigned threads : {1u, 2u, 4u}) {
-      workers.push_back(std::make_unique<Workers>());
-      list.push_back(RunContext{.runner = workers.back()->runner(Options{.threads = threads}),
-                                .partitions = threads});
-    }
-    list.push_back(RunContext{.partitions = 4});
-  }
+struct Contexts : ThreadContexts {
+  Contexts() : ThreadContexts(true) { list.push_back(RunContext{.partitions = 4}); }
 };
 
 /// `parts`: whether the parallel passes must have decided where they may run (more than one

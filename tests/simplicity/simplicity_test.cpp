@@ -15,6 +15,7 @@
 #include "pear/generate.hpp"
 #include "pear/predicates.hpp"
 #include "pipeline/threading.hpp"
+#include "run_contexts.hpp"
 #include "simplicity/simplicity.hpp"
 
 namespace pear::detail {
@@ -140,18 +141,7 @@ CleanPolygon random_polygon(std::mt19937& rng, int rings, int max_vertices, int 
   return cleaned(polygon);
 }
 
-/// Contexts with 1, 2 and 4 threads (all on this one without threads): the answer must not
-/// depend on which.
-struct Contexts {
-  std::vector<std::unique_ptr<Workers>> workers;
-  std::vector<RunContext> list;
-  Contexts() {
-    for (unsigned threads : {1u, 2u, 4u}) {
-      workers.push_back(std::make_unique<Workers>());
-      list.push_back(RunContext{.runner = workers.back()->runner(Options{.threads = threads})});
-    }
-  }
-};
+using Contexts = ThreadContexts;  // the answer must not depend on the thread count
 
 /// What every method must give: the grid the smallest violating edge (it sees every pair);
 /// the sweep and the automatic choice some violating edge, when there is a violation; all of
