@@ -61,11 +61,16 @@ Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitio
 /// (Australia: 116 ms against `fast`'s 70) for fewer flips than that saves; outlines of short
 /// runs monotone in x (fractals, stars, grids of holes: under 3 edges a run) or of a few long
 /// ones (spirals, combs) flip far more from `fast` (the spiral 2.3x the CDT's time). So `fast`
-/// from 20,000 nodes where the outline is coast-like: the sequential CDT on Australia 1.60x,
-/// Greenland 1.54x, random holes 1.32x faster.
-EarHeuristic start_of_flips(const Options& options, Outline& outline) {
+/// from 20,000 nodes where the outline is coast-like, for the clips whose `fast` is the walk
+/// (the sequential engine, divide-and-conquer's parts): the sequential CDT on Australia 1.60x,
+/// Greenland 1.54x, random holes 1.32x faster; divide-and-conquer's at 2 partitions Greenland
+/// 171 -> 146 ms of work. Partition-and-cut's chains queue their ears either way, and from
+/// `fast` left Greenland's CDT at 2 partitions 176 -> 251 ms: they keep the heuristic asked for.
+EarHeuristic start_of_flips(const Options& options, Algorithm algorithm, Outline& outline) {
   if (!options.delaunay || options.heuristic != EarHeuristic::top) return options.heuristic;
-  if (outline.nodes() < parallel_threshold) return options.heuristic;
+  const bool walks =
+      algorithm == Algorithm::sequential || algorithm == Algorithm::divide_and_conquer;
+  if (!walks || outline.nodes() < parallel_threshold) return options.heuristic;
   return outline.coast_like() ? EarHeuristic::fast : options.heuristic;
 }
 
@@ -329,7 +334,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
       resolve(options.algorithm, boundary_.size(), ctx.partitions, found_not_simple(), outline);
   std::uint32_t best_effort_vertex = 0;
   Options clip_options = options;
-  clip_options.heuristic = start_of_flips(options, outline);
+  clip_options.heuristic = start_of_flips(options, algorithm, outline);
   if (!clip(algorithm, clip_options, ctx, out, best_effort_vertex) && !found_not_simple())
     findings_.push_back(why_not_valid(options.check_simplicity, best_effort_vertex));
   const Status status = report(input, diagnostics);
