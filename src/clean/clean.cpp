@@ -38,11 +38,16 @@ bool name_coordinate_error(const InputPolygon& in, std::size_t from,
   return false;
 }
 
+/// Whether p is below q, or level with it and to its left.
+bool lower_left(const Point& p, const Point& q) {
+  return p.y < q.y || (p.y == q.y && p.x < q.x);
+}
+
 /// The lowest point, leftmost among equals: a convex corner of any simple ring.
 std::size_t lowest_leftmost(const Point* p, std::size_t n) {
   std::size_t lowest = 0;
   for (std::size_t i = 1; i < n; ++i)
-    if (p[i].y < p[lowest].y || (p[i].y == p[lowest].y && p[i].x < p[lowest].x)) lowest = i;
+    if (lower_left(p[i], p[lowest])) lowest = i;
   return lowest;
 }
 
@@ -365,8 +370,7 @@ bool orient_in_parts(CleanPolygon& out, const std::vector<std::uint32_t>& first,
       CornerScan ring = scans[j];  // every ring has a piece: at least 3 points
       for (++j; j < scans.size() && corners.list[j].range == r; ++j) {
         ring.maybe |= scans[j].maybe;
-        const Point &q = p[scans[j].lowest], &low = p[ring.lowest];
-        if (q.y < low.y || (q.y == low.y && q.x < low.x)) ring.lowest = scans[j].lowest;
+        if (lower_left(p[scans[j].lowest], p[ring.lowest])) ring.lowest = scans[j].lowest;
       }
       const int orientation = ring.maybe && folds_anywhere(p, length[r])
                                   ? 0
