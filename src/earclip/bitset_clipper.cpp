@@ -179,10 +179,146 @@ std::uint32_t BitsetClipper::best_candidate() {
   return best;
 }
 
+/// The clip where one word holds every node (the counties, buildings, parcels): the same ears
+/// in the same order as the general loops, with the sets in registers, the ear test and the
+/// refreshes inlined and the triangles written in place; about half the instructions a step.
+template <bool keyed>
+struct BitsetClipper::OneWord {
+  BitsetClipper& self;
+  Boundary& b;
+  const Point* pos = b.pos.data();
+  std::uint32_t *prev = b.prev.data(), *next = b.next.data();
+  const std::uint32_t count = b.size();
+  std::uint64_t reflex = self.reflex_.words[0], convex = self.convex_.words[0];
+  std::uint64_t candidates = self.candidates_.words[0], shared = self.shared_.words[0];
+  std::uint32_t remaining = self.remaining_, anchor = self.anchor_;
+  TriangleList& out;
+  const std::size_t first = out.size();
+  std::array<std::uint32_t, 3>* triangle = (out.resize(first + remaining - 2), out.data() + first);
+  /// The turns the tested ear's neighbours will have once it is clipped: is_ear tests the
+  /// diagonal's ends with them, computed as a refresh would, and most tested ears are clipped.
+  double turn_before = 0, turn_after = 0;
+
+  OneWord(BitsetClipper& clipper, TriangleList& triangles)
+      : self(clipper), b(*clipper.b_), out(triangles) {}
+
+  /// ear_test.hpp's is_ear (points_in_box tests the same closed box the general loop tests
+  /// again).
+  bool is_ear(std::uint32_t v) {
+    const std::uint32_t p = prev[v], n = next[v];
+    const Point a = pos[p], t = pos[v], c = pos[n];
+    const Point before = pos[prev[p]], after = pos[next[n]];
+    turn_before = orient2d(before, a, c);
+    turn_after = orient2d(a, c, after);
+    if ((turn_after == 0) | (turn_before == 0)) {
+      if (turn_after == 0 && on_open_segment(after, a, c)) return false;
+      if (turn_before == 0 && on_open_segment(before, a, c)) return false;
+    }
+    const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
+                  std::max({a.y, t.y, c.y})};
+    const std::uint64_t ear = (std::uint64_t{1} << p) | (std::uint64_t{1} << v) | (std::uint64_t{1} << n);
+    std::uint64_t near = self.points_in_box_(self.xs_column_.data(), self.ys_column_.data(),
+                                             count, box) &
+                         (reflex | shared) & ~ear;
+    for (; near != 0; near &= near - 1) {
+      const auto q = static_cast<std::uint32_t>(std::countr_zero(near));
+      if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, pos[q])) return false;
+    }
+    return true;
+  }
+  /// v's corner turns by `turn` now.
+  void refresh(std::uint32_t v, double turn) {
+    const std::uint64_t bit = std::uint64_t{1} << v;
+    const std::uint64_t now_convex = bit_if(v, turn > 0);
+    reflex = (reflex & ~bit) | bit_if(v, turn < 0);
+    convex = (convex & ~bit) | now_convex;
+    candidates = (candidates & ~bit) | now_convex;
+    if constexpr (keyed)
+      self.key_[v] = top_key(pos[prev[v]], pos[next[v]], self.side_[prev[v]], self.side_[v], turn);
+  }
+  /// Clips v, just found an ear by is_ear.
+  void clip(std::uint32_t v) {
+    const std::uint32_t p = prev[v], n = next[v];
+    *triangle++ = {b.vertex[p], b.vertex[v], b.vertex[n]};
+    next[p] = n;
+    prev[n] = p;
+    if constexpr (keyed) self.side_[p] = squared_distance(pos[p], pos[n]);
+    const std::uint64_t bit = std::uint64_t{1} << v;
+    convex &= ~bit;
+    shared &= ~bit;  // off the cycle: it blocks nothing now
+    candidates &= ~bit;
+    anchor = n;
+    --remaining;
+    refresh(p, turn_before);
+    refresh(n, turn_after);
+  }
+  /// The candidate with the smallest key, the lowest node among equals (candidates != 0).
+  std::uint32_t best_candidate() const {
+    std::uint32_t best = static_cast<std::uint32_t>(std::countr_zero(candidates));
+    std::int64_t best_key = self.key_[best];
+    for (std::uint64_t set = candidates & (candidates - 1); set != 0; set &= set - 1) {
+      const auto v = static_cast<std::uint32_t>(std::countr_zero(set));
+      const bool better = self.key_[v] < best_key;  // selects: a coin toss for the predictor
+      best = better ? v : best;
+      best_key = better ? self.key_[v] : best_key;
+    }
+    return best;
+  }
+  /// Hands the state back to the clipper and closes the cycle's last triangle.
+  bool finish() {
+    out.resize(static_cast<std::size_t>(triangle - out.data()));
+    self.reflex_.words[0] = reflex, self.convex_.words[0] = convex;
+    self.candidates_.words[0] = candidates, self.shared_.words[0] = shared;
+    self.remaining_ = remaining, self.anchor_ = anchor;
+    return remaining == 3 && self.finish(out);
+  }
+};
+
+/// clip_by_key on one word.
+bool BitsetClipper::clip_one_word_by_key(TriangleList& out) {
+  OneWord<true> w(*this, out);
+  bool rescanned = false;
+  while (w.remaining > 3) {
+    if (w.candidates == 0) {
+      if (rescanned) break;
+      rescanned = true;
+      w.candidates = w.convex;
+      continue;
+    }
+    const std::uint32_t best = w.best_candidate();
+    if (!w.is_ear(best)) {
+      w.candidates &= ~(std::uint64_t{1} << best);
+      continue;
+    }
+    rescanned = false;
+    w.clip(best);
+  }
+  return w.finish();
+}
+
+/// clip_by_walk on one word.
+bool BitsetClipper::clip_one_word_by_walk(TriangleList& out) {
+  OneWord<false> w(*this, out);
+  std::uint32_t v = w.anchor, since_clip = 0;
+  while (w.remaining > 3) {
+    if (((w.convex >> v) & 1) && w.is_ear(v)) {
+      const std::uint32_t n = w.next[v];
+      w.clip(v);
+      v = n;
+      since_clip = 0;
+    } else {
+      if (++since_clip > w.remaining) break;
+      v = w.next[v];
+    }
+  }
+  return w.finish();
+}
+
 /// `top`: the candidate with the smallest key that is an ear. A node found blocked waits until
 /// its angle changes; when none is left, one pass over every convex node (a blocker may have
 /// left) before giving up.
 bool BitsetClipper::clip_by_key(TriangleList& out) {
+  if (words_ == 1) return clip_one_word_by_key(out);
   bool rescanned = false;
   while (remaining_ > 3) {
     const std::uint32_t best = best_candidate();
@@ -205,6 +341,7 @@ bool BitsetClipper::clip_by_key(TriangleList& out) {
 
 /// `fast`: walk the cycle and clip each ear met; a whole lap without a clip means no ear.
 bool BitsetClipper::clip_by_walk(TriangleList& out) {
+  if (words_ == 1) return clip_one_word_by_walk(out);
   std::uint32_t v = anchor_, since_clip = 0;
   while (remaining_ > 3) {
     if (convex_.contains(v) && is_ear(v)) {

@@ -42,6 +42,10 @@ class BitsetClipper {
   void clip_ear(std::uint32_t v, TriangleList& out);
   void refresh(std::uint32_t v);
   bool clip_by_key(TriangleList& out);
+  template <bool keyed>
+  struct OneWord;
+  bool clip_one_word_by_key(TriangleList& out);
+  bool clip_one_word_by_walk(TriangleList& out);
   bool clip_by_walk(TriangleList& out);
   bool finish(TriangleList& out);
 
