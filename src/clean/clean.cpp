@@ -1,6 +1,7 @@
 #include "clean.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -119,12 +120,18 @@ struct CornerScan {
 /// lowest-leftmost point is found in the same pass, also without a branch.
 CornerScan scan_corners(const Point* p, std::size_t n, std::size_t from, std::size_t to) {
   CornerScan scan{false, from};
-  Point low = p[from];
+  // The lowest point so far as the bits of its coordinates, chosen by masks: GCC 12 made the
+  // selects of doubles branches (and kept `low` in memory), a misprediction at every new low.
+  std::uint64_t low_x = std::bit_cast<std::uint64_t>(p[from].x);
+  std::uint64_t low_y = std::bit_cast<std::uint64_t>(p[from].y);
   for (std::size_t k = from, before = (from == 0 ? n : from) - 1; k < to; before = k++) {
     const Point &a = p[before], &b = p[k], &c = p[k + 1 == n ? 0 : k + 1];
-    const bool lower = (b.y < low.y) | ((b.y == low.y) & (b.x < low.x));
-    scan.lowest = lower ? k : scan.lowest;
-    low = lower ? b : low;
+    const double lx = std::bit_cast<double>(low_x), ly = std::bit_cast<double>(low_y);
+    const bool lower = (b.y < ly) | ((b.y == ly) & (b.x < lx));
+    const std::uint64_t keep = std::uint64_t{0} - lower;
+    low_x = (std::bit_cast<std::uint64_t>(b.x) & keep) | (low_x & ~keep);
+    low_y = (std::bit_cast<std::uint64_t>(b.y) & keep) | (low_y & ~keep);
+    scan.lowest = (k & keep) | (scan.lowest & ~keep);
     const double left = (a.x - c.x) * (b.y - c.y), right = (a.y - c.y) * (b.x - c.x);
     const bool turns =
         std::fabs(left - right) > 2 * orient2d_filter_bound * (std::fabs(left) + std::fabs(right));
