@@ -8,6 +8,7 @@
 
 #include "geometry/segments.hpp"
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -118,7 +119,8 @@ struct CornerScan {
 /// the filter of orient2d finds clearly nonzero rules a tip out. Real rings turn sharply at a
 /// quarter of their corners, but tips are rare: the exact test then runs for almost none. The
 /// lowest-leftmost point is found in the same pass, also without a branch.
-CornerScan scan_corners(const Point* p, std::size_t n, std::size_t from, std::size_t to) {
+[[gnu::noinline]] CornerScan scan_corners(const Point* p, std::size_t n, std::size_t from,
+                                          std::size_t to) {
   CornerScan scan{false, from};
   // The lowest point so far as the bits of its coordinates, chosen by masks: GCC 12 made the
   // selects of doubles branches (and kept `low` in memory), a misprediction at every new low.
@@ -466,8 +468,10 @@ Status clean_polygon(const InputPolygon& in, CleanPolygon& out,
   out.clear();
   if (check_offsets(in, diagnostics) != Status::ok) return Status::invalid_input;
   // In parts only where they may run in parallel: on one thread they cost 1.2x the serial
-  // pass (Eurasia 14 against 11.5 ms).
-  const bool in_parts = in.size() >= in_parts_from && (ctx.parallel() || ctx.partitions > 1);
+  // pass (Eurasia 14 against 11.5 ms). The same result either way, so a build without threads
+  // never takes them and leaves their code out (the WebAssembly module: 2 KB).
+  const bool in_parts = PEAR_HAS_THREADS && in.size() >= in_parts_from &&
+                        (ctx.parallel() || ctx.partitions > 1);
   if (in_parts && clean_in_parts(in, out, ctx)) return Status::ok;
   Status status = Status::ok;
   ctx.run_serial("clean", [&] { status = clean_serially(in, out, diagnostics); });
