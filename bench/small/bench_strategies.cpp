@@ -1,7 +1,7 @@
 // bench_strategies: the crossover of the ear clipper's two strategies, which decides
 // BitsetClipper::max_nodes. One ring of n vertices of a synthetic family (random, star, koch),
 // cleaned and made a boundary once, clipped many times over by the bit sets and by the queue
-// (EarClipper::run_queue), n from 16 to 4096 (the bit sets up to their limit of 384). Each
+// (EarClipper::run_queue), n from 16 to 4096 (the bit sets up to their limit of 768). Each
 // iteration copies the boundary first (clipping works in place): the same cost for both.
 //
 //   bench_strategies [--benchmark_filter=...]
@@ -54,7 +54,7 @@ void strategy(benchmark::State& state, std::string kind, std::size_t n, bool que
 
 int main(int argc, char** argv) {
   for (const char* kind : {"random", "star", "koch"})
-    for (std::size_t n : {16u, 32u, 64u, 128u, 256u, 384u, 512u, 1024u, 2048u, 4096u})
+    for (std::size_t n : {16u, 32u, 64u, 128u, 256u, 384u, 512u, 768u, 1024u, 2048u, 4096u})
       for (bool queue : {false, true}) {
         try {
           pear::generate_polygon(kind, n, 7);

@@ -93,7 +93,8 @@ inline void BitsetClipper::refresh(std::uint32_t v) {
 
 /// ear_test.hpp's is_ear for a convex node, with the nodes that may block from bit sets: the
 /// strictly reflex ones and those at a repeated position, near the ear's box.
-bool BitsetClipper::is_ear(std::uint32_t v) const {
+bool BitsetClipper::is_ear(std::uint32_t v) {
+  ++ear_tests_;
   const Boundary& b = *b_;
   const Point* pos = b.pos.data();
   const std::uint32_t p = b.prev[v], n = b.next[v];
@@ -114,10 +115,6 @@ bool BitsetClipper::is_ear(std::uint32_t v) const {
     }
     return false;
   };
-  // One word: the nodes in the box, found a few at a time without a branch, then only those.
-  if (!slabbed_)
-    return !blocked(
-        points_in_box_(xs_column_.data(), ys_column_.data(), b.size(), {x0, y0, x1, y1}), 0);
   const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
   const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
   for (std::uint32_t w = 0; w < words_; ++w) {
@@ -168,7 +165,6 @@ std::uint32_t BitsetClipper::best_in_word(std::uint32_t w) const {
 
 /// The candidate with the smallest key, the lowest node among equals; UINT32_MAX for none.
 std::uint32_t BitsetClipper::best_candidate() {
-  if (words_ == 1) return best_in_word(0);
   std::uint32_t best = UINT32_MAX;
   for (std::uint32_t w = 0; w < words_; ++w) {
     if ((stale_words_ >> w) & 1) word_best_[w] = best_in_word(w);
@@ -204,7 +200,8 @@ struct BitsetClipper::OneWord {
 
   /// ear_test.hpp's is_ear (points_in_box tests the same closed box the general loop tests
   /// again).
-  bool is_ear(std::uint32_t v) {
+  [[gnu::always_inline]] bool is_ear(std::uint32_t v) {
+    ++self.ear_tests_;
     const std::uint32_t p = prev[v], n = next[v];
     const Point a = pos[p], t = pos[v], c = pos[n];
     const Point before = pos[prev[p]], after = pos[next[n]];
@@ -264,12 +261,16 @@ struct BitsetClipper::OneWord {
     }
     return best;
   }
-  /// Hands the state back to the clipper and closes the cycle's last triangle.
-  bool finish() {
+  /// Hands the state back to the clipper.
+  void store() {
     out.resize(static_cast<std::size_t>(triangle - out.data()));
     self.reflex_.words[0] = reflex, self.convex_.words[0] = convex;
     self.candidates_.words[0] = candidates, self.shared_.words[0] = shared;
     self.remaining_ = remaining, self.anchor_ = anchor;
+  }
+  /// store(), and the cycle's last triangle.
+  bool finish() {
+    store();
     return remaining == 3 && self.finish(out);
   }
 };
@@ -300,7 +301,13 @@ bool BitsetClipper::clip_one_word_by_key(TriangleList& out) {
 bool BitsetClipper::clip_one_word_by_walk(TriangleList& out) {
   OneWord<false> w(*this, out);
   std::uint32_t v = w.anchor, since_clip = 0;
-  while (w.remaining > 3) {
+  const std::uint64_t budget = std::uint64_t{walk_budget} * w.remaining;
+  for (std::uint64_t steps = 0; w.remaining > 3; ++steps) {
+    if (steps == budget) {
+      w.store();
+      anchor_ = v;
+      return clip_by_key_after_walk(out);
+    }
     if (((w.convex >> v) & 1) && w.is_ear(v)) {
       const std::uint32_t n = w.next[v];
       w.clip(v);
@@ -339,11 +346,37 @@ bool BitsetClipper::clip_by_key(TriangleList& out) {
   return finish(out);
 }
 
-/// `fast`: walk the cycle and clip each ear met; a whole lap without a clip means no ear.
+/// The walk's cycle from anchor_ on in `top`'s order: the sides and keys `fast` does not keep.
+bool BitsetClipper::clip_by_key_after_walk(TriangleList& out) {
+  const Boundary& b = *b_;
+  keyed_ = true;
+  std::uint32_t v = anchor_;
+  do {
+    side_[v] = squared_distance(b.pos[v], b.pos[b.next[v]]);
+    v = b.next[v];
+  } while (v != anchor_);
+  do {
+    const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
+    key_[v] = top_key(a, c, side_[b.prev[v]], side_[v], orient2d(a, t, c));
+    v = b.next[v];
+  } while (v != anchor_);
+  candidates_ = convex_;
+  stale_words_ = ~0u;
+  return clip_by_key(out);
+}
+
+/// `fast`: walk the cycle and clip each ear met; a whole lap without a clip means no ear. A
+/// walk that keeps passing nodes that are not ears (a spiral's walls, a Hilbert curve's: ears
+/// only near the ends, a lap for each few) takes `top`'s order after walk_budget steps a node.
 bool BitsetClipper::clip_by_walk(TriangleList& out) {
   if (words_ == 1) return clip_one_word_by_walk(out);
   std::uint32_t v = anchor_, since_clip = 0;
-  while (remaining_ > 3) {
+  const std::uint64_t budget = std::uint64_t{walk_budget} * remaining_;
+  for (std::uint64_t steps = 0; remaining_ > 3; ++steps) {
+    if (steps == budget) {
+      anchor_ = v;
+      return clip_by_key_after_walk(out);
+    }
     if (convex_.contains(v) && is_ear(v)) {
       const std::uint32_t n = b_->next[v];
       clip_ear(v, out);
@@ -368,6 +401,7 @@ bool BitsetClipper::clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristi
                          TriangleList& out, const std::vector<std::uint8_t>* shared) {
   b_ = &b;
   keyed_ = heuristic == EarHeuristic::top;
+  ear_tests_ = 0;
   load(entry, shared);
   if (remaining_ < 3 || remaining_ > b.size()) return false;
   return keyed_ ? clip_by_key(out) : clip_by_walk(out);

@@ -1,12 +1,13 @@
-// Ear clipping with bit sets: the strategy EarClipper takes on boundaries of at most 384 nodes
+// Ear clipping with bit sets: the strategy EarClipper takes on boundaries of at most 768 nodes
 // (docs/engine.md, "Strategies"). The same ear test as the queue's (ear_test.hpp), but the
 // strictly reflex, convex and candidate nodes are bit sets over the node numbers, the next ear
 // is the candidate with the smallest top_key (a scan of the set) or, for `fast`, the next one
-// met walking the cycle, and the ear test looks only at the reflex nodes near the ear: up to 64
-// nodes those a SIMD scan of their positions finds in its box (box_scan's points_in_box), past
-// 64 those of the slabs the box meets. No grid, bucket queue or pinch table to set up; each step
-// still scans, so the cost per vertex grows with n (bench_strategies: at 384 nodes two thirds
-// of the queue's time, at 16 a third; docs/engine.md).
+// met walking the cycle (`top`'s order once the walk has taken 3 steps a node), and the ear test
+// looks only at the reflex nodes near the ear: up to 64 nodes (one word, whose loops keep the
+// sets in registers) those a SIMD scan of their positions finds in its box (box_scan's
+// points_in_box), past 64 those of the slabs the box meets. No grid, bucket queue or pinch
+// table to set up; each step still scans, so the cost per vertex grows with n
+// (bench_strategies: at 768 nodes 0.8-0.9x the queue's time, at 16 a third; docs/engine.md).
 #pragma once
 
 #include <array>
@@ -22,7 +23,7 @@ namespace pear::detail {
 
 class BitsetClipper {
  public:
-  static constexpr std::size_t max_nodes = 384;
+  static constexpr std::size_t max_nodes = 768;
   static constexpr std::size_t max_words = max_nodes / 64;
 
   /// Clips the cycle of `b` through `entry` in place (b.size() <= max_nodes), appending its
@@ -35,10 +36,12 @@ class BitsetClipper {
             const std::vector<std::uint8_t>* shared);
   /// A node of what clip() left.
   std::uint32_t anchor() const { return anchor_; }
+  /// The ear tests the last clip() took: its work.
+  std::size_t ear_tests() const { return ear_tests_; }
 
  private:
   void load(std::uint32_t entry, const std::vector<std::uint8_t>* shared);
-  bool is_ear(std::uint32_t v) const;
+  bool is_ear(std::uint32_t v);
   void clip_ear(std::uint32_t v, TriangleList& out);
   void refresh(std::uint32_t v);
   bool clip_by_key(TriangleList& out);
@@ -47,6 +50,9 @@ class BitsetClipper {
   bool clip_one_word_by_key(TriangleList& out);
   bool clip_one_word_by_walk(TriangleList& out);
   bool clip_by_walk(TriangleList& out);
+  bool clip_by_key_after_walk(TriangleList& out);
+  /// Steps a node `fast`'s walk may take before it hands over to `top`'s order.
+  static constexpr std::uint32_t walk_budget = 3;
   bool finish(TriangleList& out);
 
   /// One bit per node, in words of 64 kept in place (no allocation, no indirection).
@@ -94,6 +100,7 @@ class BitsetClipper {
   std::uint32_t words_ = 0;
   std::uint32_t remaining_ = 0;
   std::uint32_t anchor_ = 0;  ///< a node of the cycle
+  std::size_t ear_tests_ = 0;
 };
 
 }  // namespace pear::detail

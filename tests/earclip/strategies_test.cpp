@@ -1,5 +1,5 @@
 // The ear clipper's strategies: the bit sets (src/earclip/bitset_clipper.cpp, which EarClipper
-// takes for boundaries of at most 384 nodes) and the queue. The bit sets on simple rings of
+// takes for boundaries of at most 768 nodes) and the queue. The bit sets on simple rings of
 // every synthetic family, with collinear runs added, and on rectilinear staircases, must give
 // n - 2 triangles that the validator accepts, for `top` and `fast`; on rings that are not simple
 // they must end and either clip everything or leave the rest linked for the queue. Both
@@ -85,7 +85,7 @@ void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
 TEST(BitsetClipper, SyntheticFamiliesAreClippedValidly) {
   int polygons = 0;
   for (std::string_view kind : {"star", "comb", "koch", "hilbert", "random"}) {
-    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u}) {
+    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u, 500u, 768u}) {
       for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         Polygon polygon;
         try {
@@ -149,6 +149,29 @@ TEST(BitsetClipper, RingsThatAreNotSimpleEndAndLeaveTheRestLinked) {
   EXPECT_GT(refused, 0);
 }
 
+/// `fast`'s walk on rings whose ears lie only near their ends (a spiral's walls, a Hilbert
+/// curve's) hands over to `top`'s order: its ear tests stay linear in the nodes, where a lap of
+/// the walk for every few clips made them quadratic (a 760-node spiral took 41 tests a node).
+TEST(BitsetClipper, WalkHandsOverWhereEarsAreFew) {
+  const std::pair<std::string_view, std::size_t> rings[] = {
+      {"spiral", 640}, {"spiral", 760}, {"hilbert", 60}, {"hilbert", 250}, {"hilbert", 700}};
+  for (const auto& [kind, n] : rings) {
+    const Polygon polygon = generate_polygon(kind, n, 1);
+    const CleanPolygon clean = cleaned(polygon);
+    ASSERT_LE(clean.points.size(), BitsetClipper::max_nodes);
+    {
+      SCOPED_TRACE(std::string(kind) + " " + std::to_string(clean.points.size()));
+      Boundary b = bridged(clean);
+      BitsetClipper clipper;
+      TriangleList out;
+      ASSERT_TRUE(clipper.clip(b, 0, EarHeuristic::fast, out, nullptr));
+      EXPECT_EQ(out.size(), clean.points.size() - 2);
+      EXPECT_TRUE(validate(polygon, out).valid);
+      EXPECT_LE(clipper.ear_tests(), 6 * clean.points.size());
+    }
+  }
+}
+
 /// Both strategies of EarClipper on the bridged boundary, with both heuristics: valid
 /// triangulations of the same size, `top`'s angles within 10% (the same order up to the
 /// queue's buckets).
@@ -175,7 +198,7 @@ void expect_strategies_agree(const Polygon& polygon) {
 TEST(Strategies, AgreeOnOneRing) {
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u, 600u, 768u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
