@@ -203,8 +203,8 @@ struct BitsetClipper::OneWord {
   [[gnu::always_inline]] bool is_ear(std::uint32_t v) {
     ++self.ear_tests_;
     const std::uint32_t p = prev[v], n = next[v];
-    const Point a = pos[p], t = pos[v], c = pos[n];
-    const Point before = pos[prev[p]], after = pos[next[n]];
+    const Point &a = pos[p], &t = pos[v], &c = pos[n];
+    const Point &before = pos[prev[p]], &after = pos[next[n]];
     turn_before = orient2d(before, a, c);
     turn_after = orient2d(a, c, after);
     if ((turn_after == 0) | (turn_before == 0)) {

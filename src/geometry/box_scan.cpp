@@ -163,7 +163,9 @@ template <class Meets>
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const RowRanges& r = rows[k];
     const Box b = c.box(r.row);
-    const bool first = scan(c, r.from, r.to, b), second = scan(c, r.from2, r.to2, b);
+    // The second range is empty but for a ring's first edge (a polygon with holes).
+    const bool first = scan(c, r.from, r.to, b);
+    const bool second = r.from2 < r.to2 && scan(c, r.from2, r.to2, b);
     meets[k / 64] |= static_cast<std::uint64_t>(first | second) << (k % 64);
   }
 }
