@@ -99,7 +99,8 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
   const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
   return !near(a, t, c, [&](const ReflexGrid::Entry& e) {
     const Point& x = e.pos;
-    if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
+    // One branch: which side of the box a node misses by is a coin toss for the predictor.
+    if (!((x.x >= lo.x) & (x.x <= hi.x) & (x.y >= lo.y) & (x.y <= hi.y))) return false;
     if (e.node == p || e.node == v || e.node == n) return false;
     return blocks(b, links, p, v, n, e.node, a, t, c, x);
   });

@@ -115,7 +115,10 @@ bool EarClipper::is_ear(std::uint32_t v) const {
                           const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
                           return grid_.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
                             const Point& x = e.pos;
-                            if (x.x < lo.x || x.x > hi.x || x.y < lo.y || x.y > hi.y) return false;
+                            // One branch: which side of the box a node misses by is a
+                            // coin toss for the predictor, that it misses is not.
+                            if (!((x.x >= lo.x) & (x.x <= hi.x) & (x.y >= lo.y) & (x.y <= hi.y)))
+                              return false;
                             ++boxed_;
                             return visit(e);
                           });
