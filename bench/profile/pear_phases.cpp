@@ -4,7 +4,7 @@
 // tasks' times) and span (its longest task) over the runs, and the whole run's wall time.
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
-//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2t1 pc16t1 cdt16t1
+//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1 cdt16t1
 //   mc16t1 dc16t1 mc2 dc2 auto2 cdt2
 //
 // Cache misses per phase: run one configuration under cachegrind (bench/profile/README.md).
@@ -44,6 +44,7 @@ std::vector<Config> configs() {
   add("cdt", Algorithm::sequential, 1, true);
   add("cdtfast", Algorithm::sequential, 1, true, pear::EarHeuristic::fast);
   add("pc2", Algorithm::partition_and_cut, 2, false);
+  add("pc2cdt", Algorithm::partition_and_cut, 2, true);
   add("pc2t1", Algorithm::partition_and_cut, 1, false);  // the same work on one thread
   all.back().options.partitions = 2;
   // 16 partitions on one thread: the work/span bound for 16 cores from task times.
