@@ -31,6 +31,8 @@ class Outline {
   /// More than 16 runs of over 64 edges: walls wound round each other (a spiral: 82 runs of
   /// 1,220 edges; a comb has 2, fractals, stars and hole grids runs of 1.5-2.3 edges).
   bool corridors() { return runs() > 16 && runs() * 64 < nodes(); }
+  /// At most 16 runs, of over 64 edges: a comb (2 runs), an outline convex or nearly so.
+  bool few_long_runs() { return runs() <= 16 && runs() * 64 < nodes(); }
 
  private:
   static constexpr std::size_t unknown = SIZE_MAX;
@@ -40,11 +42,16 @@ class Outline {
 
 /// `automatic` depends on the outline and the partitions, never on the threads: the output does
 /// not change with the machine. With two partitions divide-and-conquer's one split line halves
-/// the work and keeps `top`'s quality: it measured fastest at 2 threads on every family and was
-/// never slower than sequential. With more, its recursion costs work on stars and combs while
+/// the work and keeps `top`'s quality: it measured fastest at 2 threads on every family but the
+/// comb. With more, its recursion costs work on stars and combs while
 /// partition-and-cut's chains keep scaling, except along corridors, whose two walls fall in
 /// different chains: there divide-and-conquer's slabs (the spiral on 16 cores at 4-16 threads:
 /// 21-26 ms against 45-54; docs/parallel.md, "What automatic picks").
+/// Where the outline has only a few long runs (a comb; an outline convex or nearly so),
+/// mark-and-cut at any partition count: divide-and-conquer's repair of the comb's base strip
+/// and partition-and-cut's chains along its teeth cost more than they save (16 cores, 2026-11-26 17:45: mark-and-cut 1.03-1.19x the sequential engine
+/// at 2-16 threads, divide-and-conquer 0.80x at 2, partition-and-cut 0.93-1.03x at 4-16; a
+/// 100,000-point ellipse on 2 cores: 2.0x against 0.9x, and its CDT 0.75x against 0.5x).
 /// A polygon found not simple gets the sequential engine's best effort: the parallel variants
 /// need a simple boundary and, after clipping their parts, fall back to it (a 84k-vertex
 /// country: 26 ms of parts thrown away, slower at 2 threads than at 1).
@@ -52,6 +59,7 @@ Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitio
                   Outline& outline) {
   if (requested != Algorithm::automatic) return requested;
   if (partitions < 2 || nodes < parallel_threshold || not_simple) return Algorithm::sequential;
+  if (outline.few_long_runs()) return Algorithm::mark_and_cut;
   if (partitions == 2 || outline.corridors()) return Algorithm::divide_and_conquer;
   return Algorithm::partition_and_cut;
 }

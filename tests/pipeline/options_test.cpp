@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <string>
 
 #include "pear/generate.hpp"
@@ -92,7 +93,7 @@ TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
     Algorithm expected, other;
   };
   for (const Case c : {Case{"spiral", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
-                       Case{"comb", Algorithm::partition_and_cut, Algorithm::divide_and_conquer},
+                       Case{"comb", Algorithm::mark_and_cut, Algorithm::partition_and_cut},
                        Case{"star", Algorithm::partition_and_cut, Algorithm::divide_and_conquer}}) {
     SCOPED_TRACE(c.kind);
     const Polygon polygon = generate_polygon(c.kind, 60000, 3);
@@ -105,6 +106,30 @@ TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
       ASSERT_EQ(chosen.status, Status::ok);
       EXPECT_EQ(chosen.triangles, expected.triangles) << partitions << " partitions";
       EXPECT_NE(chosen.triangles, other.triangles) << partitions << " partitions";
+    }
+  }
+}
+
+// Few long runs monotone in x (a comb: 2; an outline convex or nearly so): mark-and-cut at any
+// partition count, 2 included, where divide-and-conquer's repair of the comb's base strip and
+// partition-and-cut's chains along its teeth cost more than they save.
+TEST(Options, AutomaticTakesMarkAndCutWhereRunsAreFewAndLong) {
+  Ring ellipse;
+  for (int i = 0; i < 40000; ++i) {
+    const double angle = 2 * M_PI * i / 40000;
+    ellipse.push_back({1000 * std::cos(angle), 200 * std::sin(angle)});
+  }
+  for (const Polygon& polygon : {generate_polygon("comb", 60000, 3), Polygon{ellipse}}) {
+    for (unsigned partitions : {2u, 4u}) {
+      const auto chosen = triangulate(polygon, {.threads = 1, .partitions = partitions});
+      const auto mark_and_cut = triangulate(
+          polygon, {.algorithm = Algorithm::mark_and_cut, .threads = 2, .partitions = partitions});
+      const auto divide_and_conquer =
+          triangulate(polygon, {.algorithm = Algorithm::divide_and_conquer, .threads = 2,
+                                .partitions = partitions});
+      ASSERT_EQ(chosen.status, Status::ok);
+      EXPECT_EQ(chosen.triangles, mark_and_cut.triangles) << partitions << " partitions";
+      EXPECT_NE(chosen.triangles, divide_and_conquer.triangles) << partitions << " partitions";
     }
   }
 }
