@@ -4,8 +4,8 @@
 // tasks' times) and span (its longest task) over the runs, and the whole run's wall time.
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
-//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1 cdt16t1
-//   mc16t1 dc16t1 mc2 dc2 auto2 cdt2
+//   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1
+//   cdt16t1 mc16t1 dc16t1 mc2 dc2 auto2 cdt2
 //
 // Cache misses per phase: run one configuration under cachegrind (bench/profile/README.md).
 #include <algorithm>

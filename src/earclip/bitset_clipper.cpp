@@ -213,10 +213,11 @@ struct BitsetClipper::OneWord {
     }
     const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
                   std::max({a.y, t.y, c.y})};
-    const std::uint64_t ear = (std::uint64_t{1} << p) | (std::uint64_t{1} << v) | (std::uint64_t{1} << n);
-    std::uint64_t near = self.points_in_box_(self.xs_column_.data(), self.ys_column_.data(),
-                                             count, box) &
-                         (reflex | shared) & ~ear;
+    const std::uint64_t ear =
+        (std::uint64_t{1} << p) | (std::uint64_t{1} << v) | (std::uint64_t{1} << n);
+    std::uint64_t near =
+        self.points_in_box_(self.xs_column_.data(), self.ys_column_.data(), count, box) &
+        (reflex | shared) & ~ear;
     for (; near != 0; near &= near - 1) {
       const auto q = static_cast<std::uint32_t>(std::countr_zero(near));
       if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, pos[q])) return false;

@@ -43,15 +43,18 @@ class Outline {
 /// `automatic` depends on the outline and the partitions, never on the threads: the output does
 /// not change with the machine. With two partitions divide-and-conquer's one split line halves
 /// the work and keeps `top`'s quality: it measured fastest at 2 threads on every family but the
-/// comb. With more, its recursion costs work on stars and combs while
-/// partition-and-cut's chains keep scaling, except along corridors, whose two walls fall in
-/// different chains: there divide-and-conquer's slabs (the spiral on 16 cores at 4-16 threads:
-/// 21-26 ms against 45-54; docs/parallel.md, "What automatic picks").
+/// comb. With more, its recursion costs work on stars and combs while partition-and-cut's
+/// chains keep scaling, except along corridors, whose two walls fall in different chains: there
+/// divide-and-conquer's slabs (the spiral on 16 cores at 4-16 threads: 21-26 ms against 45-54;
+/// docs/parallel.md, "What automatic picks").
+///
 /// Where the outline has only a few long runs (a comb; an outline convex or nearly so),
 /// mark-and-cut at any partition count: divide-and-conquer's repair of the comb's base strip
-/// and partition-and-cut's chains along its teeth cost more than they save (16 cores, 2026-11-26 17:45: mark-and-cut 1.03-1.19x the sequential engine
-/// at 2-16 threads, divide-and-conquer 0.80x at 2, partition-and-cut 0.93-1.03x at 4-16; a
-/// 100,000-point ellipse on 2 cores: 2.0x against 0.9x, and its CDT 0.75x against 0.5x).
+/// and partition-and-cut's chains along its teeth cost more than they save (16 cores, 2026-11-26
+/// 17:45: mark-and-cut 1.03-1.19x the sequential engine at 2-16 threads, divide-and-conquer 0.80x
+/// at 2, partition-and-cut 0.93-1.03x at 4-16; a 100,000-point ellipse on 2 cores: 2.0x against
+/// 0.9x, and its CDT 0.75x against 0.5x).
+///
 /// A polygon found not simple gets the sequential engine's best effort: the parallel variants
 /// need a simple boundary and, after clipping their parts, fall back to it (a 84k-vertex
 /// country: 26 ms of parts thrown away, slower at 2 threads than at 1).

@@ -124,9 +124,9 @@ TEST(Options, AutomaticTakesMarkAndCutWhereRunsAreFewAndLong) {
       const auto chosen = triangulate(polygon, {.threads = 1, .partitions = partitions});
       const auto mark_and_cut = triangulate(
           polygon, {.algorithm = Algorithm::mark_and_cut, .threads = 2, .partitions = partitions});
-      const auto divide_and_conquer =
-          triangulate(polygon, {.algorithm = Algorithm::divide_and_conquer, .threads = 2,
-                                .partitions = partitions});
+      const auto divide_and_conquer = triangulate(
+          polygon,
+          {.algorithm = Algorithm::divide_and_conquer, .threads = 2, .partitions = partitions});
       ASSERT_EQ(chosen.status, Status::ok);
       EXPECT_EQ(chosen.triangles, mark_and_cut.triangles) << partitions << " partitions";
       EXPECT_NE(chosen.triangles, divide_and_conquer.triangles) << partitions << " partitions";
