@@ -177,7 +177,7 @@ std::uint32_t BitsetClipper::best_candidate() {
 
 /// The clip where one word holds every node (the counties, buildings, parcels): the same ears
 /// in the same order as the general loops, with the sets in registers, the ear test and the
-/// refreshes inlined and the triangles written in place; about half the instructions a step.
+/// refreshes inlined and the triangles written in place: two thirds of the instructions a step.
 template <bool keyed>
 struct BitsetClipper::OneWord {
   BitsetClipper& self;
