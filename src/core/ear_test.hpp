@@ -70,19 +70,33 @@ inline bool blocks(const Boundary& b, const Links& links, std::uint32_t p, std::
   return blocks_on_boundary(b, links, p, v, n, q, o1, o3);
 }
 
+/// The turns `before` and `after` will have at a and c once the ear is clipped, computed as a
+/// refresh of those corners computes them: the bit-set clipper hands them on to its refreshes.
+struct DiagonalTurns {
+  double before = 0;  ///< orient2d(before, a, c)
+  double after = 0;   ///< orient2d(a, c, after)
+};
+
 /// Whether the diagonal a-c of an ear is clear at its ends: no boundary edge runs along it from
 /// one of them (a collinear chain there is not hashed as reflex); `before` precedes a on the
-/// boundary, `after` follows c. Both orientations, then one branch: whether a neighbour's
-/// neighbour lies on the diagonal's line is rare, whether it lies in its box a coin toss for the
-/// branch predictor. The points come by value: orient2d's exact stage is a call, after which
-/// anything read through a reference would be read again.
-inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) {
-  const double turn_after = orient2d(a, c, after), turn_before = orient2d(a, c, before);
-  if ((turn_after == 0) | (turn_before == 0)) {
-    if (turn_after == 0 && on_open_segment(after, a, c)) return false;
-    if (turn_before == 0 && on_open_segment(before, a, c)) return false;
+/// boundary, `after` follows c. Both orientations (into `turns`), then one branch: whether a
+/// neighbour's neighbour lies on the diagonal's line is rare, whether it lies in its box a coin
+/// toss for the branch predictor.
+inline bool diagonal_clear_at_ends(const Point& a, const Point& c, const Point& before,
+                                   const Point& after, DiagonalTurns& turns) {
+  turns = {orient2d(before, a, c), orient2d(a, c, after)};
+  if ((turns.after == 0) | (turns.before == 0)) {
+    if (turns.after == 0 && on_open_segment(after, a, c)) return false;
+    if (turns.before == 0 && on_open_segment(before, a, c)) return false;
   }
   return true;
+}
+
+/// The same with the points by value: orient2d's exact stage is a call, after which anything
+/// read through a reference would be read again.
+inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) {
+  DiagonalTurns turns;
+  return diagonal_clear_at_ends(a, c, before, after, turns);
 }
 
 /// Whether v is an ear: strictly convex, the diagonal clear at its ends, and no hashed node

@@ -191,9 +191,9 @@ struct BitsetClipper::OneWord {
   TriangleList& out;
   const std::size_t first = out.size();
   std::array<std::uint32_t, 3>* triangle = (out.resize(first + remaining - 2), out.data() + first);
-  /// The turns the tested ear's neighbours will have once it is clipped: is_ear tests the
-  /// diagonal's ends with them, computed as a refresh would, and most tested ears are clipped.
-  double turn_before = 0, turn_after = 0;
+  /// The turns the tested ear's neighbours will have once it is clipped, for their refreshes:
+  /// most tested ears are clipped.
+  DiagonalTurns turns;
 
   OneWord(BitsetClipper& clipper, TriangleList& triangles)
       : self(clipper), b(*clipper.b_), out(triangles) {}
@@ -204,13 +204,7 @@ struct BitsetClipper::OneWord {
     ++self.ear_tests_;
     const std::uint32_t p = prev[v], n = next[v];
     const Point &a = pos[p], &t = pos[v], &c = pos[n];
-    const Point &before = pos[prev[p]], &after = pos[next[n]];
-    turn_before = orient2d(before, a, c);
-    turn_after = orient2d(a, c, after);
-    if ((turn_after == 0) | (turn_before == 0)) {
-      if (turn_after == 0 && on_open_segment(after, a, c)) return false;
-      if (turn_before == 0 && on_open_segment(before, a, c)) return false;
-    }
+    if (!diagonal_clear_at_ends(a, c, pos[prev[p]], pos[next[n]], turns)) return false;
     const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
                   std::max({a.y, t.y, c.y})};
     const std::uint64_t ear =
@@ -247,8 +241,8 @@ struct BitsetClipper::OneWord {
     candidates &= ~bit;
     anchor = n;
     --remaining;
-    refresh(p, turn_before);
-    refresh(n, turn_after);
+    refresh(p, turns.before);
+    refresh(n, turns.after);
   }
   /// The candidate with the smallest key, the lowest node among equals (candidates != 0).
   std::uint32_t best_candidate() const {

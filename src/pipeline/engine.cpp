@@ -27,14 +27,16 @@ class Outline {
     return runs_;
   }
   /// Runs of 3 to 64 edges: coastlines (5-15), random polygons with holes (4).
-  bool coast_like() { return runs() * 3 <= nodes() && runs() * 64 >= nodes(); }
-  /// More than 16 runs of over 64 edges: walls wound round each other (a spiral: 82 runs of
-  /// 1,220 edges; a comb has 2, fractals, stars and hole grids runs of 1.5-2.3 edges).
-  bool corridors() { return runs() > 16 && runs() * 64 < nodes(); }
-  /// At most 16 runs, of over 64 edges: a comb (2 runs), an outline convex or nearly so.
-  bool few_long_runs() { return runs() <= 16 && runs() * 64 < nodes(); }
+  bool coast_like() { return runs() * 3 <= nodes() && !long_runs(); }
+  /// More than 16 long runs: walls wound round each other (a spiral: 82 runs of 1,220 edges;
+  /// fractals, stars and hole grids have runs of 1.5-2.3 edges).
+  bool corridors() { return long_runs() && runs() > 16; }
+  /// At most 16 long runs: a comb (2 runs), an outline convex or nearly so.
+  bool few_long_runs() { return long_runs() && runs() <= 16; }
 
  private:
+  /// Runs of over 64 edges on average.
+  bool long_runs() { return runs() * 64 < nodes(); }
   static constexpr std::size_t unknown = SIZE_MAX;
   const CleanPolygon& clean_;
   std::size_t runs_ = unknown;
