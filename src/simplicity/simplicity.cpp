@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <limits>
+#include <utility>
 
 #include "geometry/box_scan.hpp"
 #include "geometry/segments.hpp"
@@ -390,51 +391,109 @@ std::size_t SimplicityCheck::walk_chain_pair(const Chain& chain, const Chain& ot
   return looks;
 }
 
-/// Every pair of edges from two runs monotone in x whose boxes meet; none past `budget` looks
-/// (unlimited: every_pair), or past chains_limit edges when a ring folds back.
-std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon,
-                                                     bool find_crossings, std::size_t budget) {
+/// The edges' boxes, directions and runs monotone in x; false where the runs are not worth
+/// walking (too short, or long ones wound round each other past `budget` looks). Sets fold_,
+/// the smallest edge of a ring folding back (when `find_crossings`).
+bool SimplicityCheck::prepare_runs(const CleanPolygon& polygon, bool find_crossings,
+                                   std::size_t budget) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   const bool limited = budget != every_pair;
   edges_.boxes.resize(n);
   direction_.resize(n);
-  const std::uint32_t fold = link_edges(
-      polygon, edges_, find_crossings, [&](std::uint32_t e, const Point& a, const Point& b) {
-        edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                           std::max(a.y, b.y)};
-        direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
-      });
-  std::uint32_t smallest = fold;
-  bool touching = false;
-  const auto visit = [&](std::uint32_t e, std::uint32_t f) {
-    visit_pair(edges_, e, f, find_crossings, smallest, touching);
-  };
-  if (!monotone_chains(polygon, limited ? 3 : 0)) return std::nullopt;
+  fold_ = link_edges(polygon, edges_, find_crossings,
+                     [&](std::uint32_t e, const Point& a, const Point& b) {
+                       edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y),
+                                          std::max(a.x, b.x), std::max(a.y, b.y)};
+                       direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
+                     });
+  if (!monotone_chains(polygon, limited ? 3 : 0)) return false;
   // Long runs may wind around each other (a spiral): then a look at their pairs first, which
   // short runs (coasts: 5-7 edges) would pay as much for as for the walk.
-  if (limited && chains_.size() * 64 < n && !chains_within(budget)) return std::nullopt;
-  std::size_t spent = 0;
-  for (std::size_t i = 0; i < chains_.size(); ++i) {
+  return !(limited && chains_.size() * 64 < n && !chains_within(budget));
+}
+
+/// The runs [first, last) against every run after them that they meet in x. The looks are
+/// added to `spent`, shared by all walks of one check, every few thousand: a walk stops once
+/// the sum passes `budget`. A sum only grows, so whether some walk stops does not depend on
+/// how the walks interleave: exactly when all of them together would pass the budget.
+SimplicityCheck::RunWalk SimplicityCheck::walk_runs(std::size_t first, std::size_t last,
+                                                    bool find_crossings, std::size_t budget,
+                                                    std::atomic<std::size_t>& spent) const {
+  RunWalk walk;
+  const auto visit = [&](std::uint32_t e, std::uint32_t f) {
+    visit_pair(edges_, e, f, find_crossings, walk.smallest, walk.touching);
+  };
+  constexpr std::size_t flush_every = 4096;
+  std::size_t looks = 0;
+  for (std::size_t i = first; i < last; ++i) {
     const Chain& chain = chains_[i];
     for (std::size_t j = i + 1; j < chains_.size() && chains_[j].x0 <= chain.x1; ++j) {
       const Chain& other = chains_[j];
       // Runs apart in y are not looked into at all (one branch for both sides).
       const bool apart = (other.y0 > chain.y1) | (chain.y0 > other.y1);
-      spent += apart ? 1 : walk_chain_pair(chain, other, visit);
-      if (spent > budget) return std::nullopt;
+      looks += apart ? 1 : walk_chain_pair(chain, other, visit);
+    }
+    if (looks >= flush_every || i + 1 == last) {
+      if (budget == every_pair) continue;
+      const std::size_t added = std::exchange(looks, 0);
+      if (spent.fetch_add(added, std::memory_order_relaxed) + added > budget) {
+        walk.over_budget = true;
+        return walk;
+      }
     }
   }
+  return walk;
+}
+
+/// Every pair of edges from two runs monotone in x whose boxes meet, sequentially (at most
+/// chains_limit edges: every pair, no budget).
+Verdict SimplicityCheck::check_few_chains(const CleanPolygon& polygon, bool find_crossings) {
+  const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  prepare_runs(polygon, find_crossings, every_pair);
+  std::atomic<std::size_t> spent{0};
+  RunWalk walk = walk_runs(0, chains_.size(), find_crossings, every_pair, spent);
   // Without a fold, every pair that can conflict was looked at: `smallest` is the smallest
   // edge in any conflict. A run may hide a conflict behind a vertical fold-back within it (a
-  // neighbour conflict, found above): then every pair, or (not quadratic) the grid.
-  if (find_crossings && fold != SmallestViolation::none) {
-    if (n > chains_limit) return std::nullopt;
+  // neighbour conflict, found by link_edges): then every pair.
+  if (find_crossings && fold_ != SmallestViolation::none) {
+    walk.smallest = std::min(walk.smallest, fold_);
     const auto& boxes = edges_.boxes;
     for (std::uint32_t e = 0; e + 1 < n; ++e)
       for (std::uint32_t f = e + 1; f < n; ++f)
-        if (boxes[f].x0 <= boxes[e].x1 && boxes[e].x0 <= boxes[f].x1) visit(e, f);
+        if (boxes[f].x0 <= boxes[e].x1 && boxes[e].x0 <= boxes[f].x1)
+          visit_pair(edges_, e, f, find_crossings, walk.smallest, walk.touching);
   }
-  return verdict_of(smallest, touching);
+  return verdict_of(walk.smallest, walk.touching);
+}
+
+/// The runs of a large polygon, within chains_budget looks an edge: the set-up sequentially,
+/// the pairs of runs in tasks (a run's pairs are read-only; the smallest conflict and whether
+/// any edges touch do not depend on the order). None where the grid is the better index, or
+/// where a ring folds back (a run may hide a conflict behind it: the grid finds it).
+std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon,
+                                                     const RunContext& ctx) {
+  const std::size_t budget = chains_budget * polygon.points.size();
+  bool ready = false;
+  ctx.run_serial("check simplicity", [&] {
+    ready = runs_worth_trying(polygon) && prepare_runs(polygon, true, budget) &&
+            fold_ == SmallestViolation::none;
+  });
+  if (!ready) return std::nullopt;
+  // Tasks of equal run counts, a few a partition so that stealing evens out their work.
+  const std::size_t runs = chains_.size();
+  const std::size_t tasks = std::clamp<std::size_t>(runs / 1024, 1, 4 * ctx.partitions);
+  std::vector<RunWalk> walks(tasks);
+  std::atomic<std::size_t> spent{0};
+  ctx.run_tasks("check simplicity: run pairs", tasks, [&](std::size_t t) {
+    walks[t] = walk_runs(runs * t / tasks, runs * (t + 1) / tasks, true, budget, spent);
+  });
+  RunWalk all;
+  for (const RunWalk& walk : walks) {
+    if (walk.over_budget) return std::nullopt;
+    all.smallest = std::min(all.smallest, walk.smallest);
+    all.touching |= walk.touching;
+  }
+  return verdict_of(all.smallest, all.touching);
 }
 
 /// clean_polygon leaves no point equal to the next, so two edges that are not neighbours share
@@ -464,13 +523,7 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     // runs are serial, the grid's search parallel (its span the shorter from four on). Where
     // the grid gives up (edges long against its cells: a comb's teeth), the runs before the
     // sweep in slabs: on the comb 1.7 ms against two slabs of 8 ms each.
-    const auto by_chains = [&] {
-      std::optional<Verdict> decided;
-      ctx.run_serial("check simplicity", [&] {
-        if (runs_worth_trying(polygon)) decided = check_chains(polygon, true, chains_budget * n);
-      });
-      return decided;
-    };
+    const auto by_chains = [&] { return check_chains(polygon, ctx); };
     const bool runs_first = ctx.partitions <= 2;
     if (runs_first)
       if (auto decided = by_chains()) return *decided;
@@ -486,7 +539,7 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
   }
   ctx.run_serial("check simplicity", [&] {
     verdict = n <= few_edges_limit ? check_all_pairs(polygon, find_crossings)
-                                   : *check_chains(polygon, find_crossings, every_pair);
+                                   : check_few_chains(polygon, find_crossings);
   });
   // With few edges a hole that is not where a hole may be is cheap to find at once.
   if (find_crossings && !verdict.violation && verdict.touching == Verdict::Touching::no &&

@@ -193,8 +193,17 @@ class SimplicityCheck {
   /// Every pair of edges in two runs whose boxes meet; none when that would look at more than
   /// `budget` pairs of runs and edges (the grid is then the better index).
   static constexpr std::size_t every_pair = std::numeric_limits<std::size_t>::max();
-  std::optional<Verdict> check_chains(const CleanPolygon& polygon, bool find_crossings,
-                                      std::size_t budget);
+  bool prepare_runs(const CleanPolygon& polygon, bool find_crossings, std::size_t budget);
+  /// What a walk over pairs of runs found: the smallest edge in a conflict, touching edges.
+  struct RunWalk {
+    std::uint32_t smallest = SmallestViolation::none;
+    bool touching = false;
+    bool over_budget = false;
+  };
+  RunWalk walk_runs(std::size_t first, std::size_t last, bool find_crossings, std::size_t budget,
+                    std::atomic<std::size_t>& spent) const;
+  Verdict check_few_chains(const CleanPolygon& polygon, bool find_crossings);
+  std::optional<Verdict> check_chains(const CleanPolygon& polygon, const RunContext& ctx);
   bool monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges);
   bool chains_within(std::size_t budget) const;
   struct Chain;
@@ -216,6 +225,7 @@ class SimplicityCheck {
   std::vector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
   std::vector<Point> sorted_points_;    ///< repeats_a_position's copy
+  std::uint32_t fold_ = 0;              ///< prepare_runs': the smallest edge folding back
 
   /// check_all_pairs' edge boxes, a column per side (padded for four-wide loads), and the
   /// pairs to test as rows (geometry/box_scan.hpp).

@@ -323,6 +323,50 @@ TEST(Simplicity, PerturbedLargePolygonsGiveTheSameAnswerAtEveryThreadCount) {
   }
 }
 
+/// Up to two partitions a coast-like outline (here a circle with a ripple: runs of about 12
+/// edges monotone in x) is checked by its runs, the pairs of runs in tasks: on 1, 2 and 4
+/// threads, with 1 and 2 partitions, the smallest edge in any conflict as the grid alone finds
+/// it, and no conflict (nor touching) on the polygon as made.
+TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
+  constexpr std::size_t n = 60000;
+  Ring made;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = 1000 + 0.2 * std::sin(2 * M_PI * static_cast<double>(i % 12) / 12);
+    const double angle = 2 * M_PI * static_cast<double>(i) / n;
+    made.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  ASSERT_LE(x_reversals(cleaned(Polygon{made})) * 3, n) << "coast-like, as the test means";
+  const ThreadContexts contexts;
+  std::mt19937 rng(11);
+  for (int moved = 0; moved <= 3; ++moved) {
+    Ring ring = made;
+    for (int m = 0; m < moved; ++m)
+      std::swap(ring[(m * 7919 + 17) % n],
+                ring[std::uniform_int_distribution<std::size_t>(n / 4, 3 * n / 4)(rng)]);
+    SCOPED_TRACE(std::to_string(moved) + " swaps");
+    const CleanPolygon clean = cleaned(Polygon{ring});
+    SimplicityCheck check;
+    const auto by_grid = check.find_violation(clean, RunContext{}, Method::grid_only);
+    ASSERT_EQ(by_grid.has_value(), moved > 0);
+    for (const RunContext& given : contexts.list) {
+      for (std::uint32_t partitions : {1u, 2u}) {
+        RunProfile profile;
+        RunContext ctx = given;
+        ctx.partitions = partitions;
+        ctx.profile = &profile;
+        const Verdict verdict = check.check(clean, ctx, true);
+        EXPECT_EQ(verdict.violation, by_grid) << partitions << " partitions";
+        if (!by_grid) EXPECT_EQ(verdict.touching, Verdict::Touching::no);
+        const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
+          return p.name == "check simplicity: run pairs";
+        });
+        ASSERT_NE(pairs, profile.phases.end());
+        EXPECT_GT(pairs->task_seconds.size(), 1u);
+      }
+    }
+  }
+}
+
 TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   // A random star (long edges packed close: the grid gives up) with two radii swapped.
   Polygon star = generate_polygon("star", 20000, 5);
