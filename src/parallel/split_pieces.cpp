@@ -39,20 +39,35 @@ void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) 
   out.close_piece();
 }
 
-/// Quantiles of the sample: the ceil(i * n / parts)-th smallest x, without repeats.
-std::vector<double> quantile_positions(const std::vector<double>& xs, unsigned parts) {
+/// Up to this many split lines, ranks are selected and crossings counted in linear passes (a
+/// sort of Borneo's sample was most of dividing it in two); past it, sorted.
+constexpr std::size_t few_lines = 16;
+
+/// Quantiles of the sample: the ceil(i * n / parts)-th smallest x, without repeats. Reorders
+/// xs: for a few lines each rank is selected above the last (nth_element), else xs is sorted.
+std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts) {
   std::vector<double> after;
-  for (std::size_t i = 1; i < parts && !xs.empty(); ++i) {
+  if (xs.empty()) return after;
+  const bool select = parts - 1 <= few_lines;
+  if (!select) detail::sort(xs.begin(), xs.end());
+  const double largest = *std::max_element(xs.begin(), xs.end());
+  std::size_t selected = 0;  // xs[0, selected) hold the smallest values, in no order
+  for (std::size_t i = 1; i < parts; ++i) {
     const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
+    if (select && m > selected) {
+      std::nth_element(xs.begin() + static_cast<std::ptrdiff_t>(selected),
+                       xs.begin() + static_cast<std::ptrdiff_t>(m - 1), xs.end());
+      selected = m;
+    }
     const double v = xs[m - 1];
-    if (v < xs.back() && (after.empty() || after.back() < v)) after.push_back(v);
+    if (v < largest && (after.empty() || after.back() < v)) after.push_back(v);
   }
   return after;
 }
 
 /// The crossings of every stride-th edge of the cycle with lines placed right after each x of
-/// `after`, times the stride: an edge crosses such a line when its x range holds the x and
-/// reaches past it.
+/// `after` (increasing), times the stride: an edge crosses such a line when its x range holds
+/// the x and reaches past it.
 std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner>& cycle,
                                 std::size_t stride, const std::vector<double>& after) {
   std::vector<double> low, high;
@@ -62,9 +77,14 @@ std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner
     low.push_back(std::min(x0, x1));
     high.push_back(std::max(x0, x1));
   }
+  std::size_t crossings = 0;
+  if (after.size() <= few_lines) {
+    for (std::size_t e = 0; e < low.size(); ++e)
+      for (double v : after) crossings += (low[e] <= v) & (v < high[e]);
+    return crossings * stride;
+  }
   detail::sort(low.begin(), low.end());
   detail::sort(high.begin(), high.end());
-  std::size_t crossings = 0;
   // Edges starting at or before v, less those ending there too.
   for (double v : after)
     crossings +=
@@ -83,7 +103,6 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   std::vector<double> xs;
   for (std::size_t i = 0; i < cycle.size(); i += stride)
     xs.push_back(b.pos[corner_index(cycle[i])].x);
-  detail::sort(xs.begin(), xs.end());
   const std::size_t budget = max_steiner_points(cycle.size());
   for (; parts >= 2; parts /= 2) {
     std::vector<double> after = quantile_positions(xs, parts);
