@@ -42,11 +42,32 @@ class Outline {
   std::size_t runs_ = unknown;
 };
 
+/// What `automatic` runs: the algorithm, and the parts it cuts the work into.
+struct Choice {
+  Algorithm algorithm;
+  std::uint32_t parts;
+};
+
+/// Divide-and-conquer's parts on a large coast-like outline: more than the partitions. Its
+/// parts are clipped by the sequential engine, whose queue on a boundary of hundreds of
+/// thousands of nodes waits for memory: parts a few times smaller clip faster (Eurasia in 8
+/// parts: 737 ms of work against the sequential engine's 1,033), and more parts than threads
+/// let the scheduler even out parts of unequal work (one large piece clips slower than many
+/// small ones: South America's two halves 137 and 61 ms). Work/span bound at 2 partitions,
+/// 2 parts -> 4 or 8 (docs/parallel.md, "What automatic picks"): Australia 1.77 -> 1.92x,
+/// Greenland 1.80 -> 1.99x, South America 1.66 -> 2.23x, Eurasia 1.68 -> 2.62x.
+std::uint32_t divide_and_conquer_parts(std::uint32_t partitions, Outline& outline) {
+  if (outline.nodes() < 100'000 || !outline.coast_like()) return partitions;
+  return std::max(partitions, 2u) * (outline.nodes() < 300'000 ? 2 : 4);
+}
+
 /// `automatic` depends on the outline and the partitions, never on the threads: the output does
-/// not change with the machine. With two partitions divide-and-conquer's one split line halves
-/// the work and keeps `top`'s quality: it measured fastest at 2 threads on every family but the
-/// comb. With more, its recursion costs work on stars and combs while partition-and-cut's
-/// chains keep scaling, except along corridors, whose two walls fall in different chains: there
+/// not change with the machine. Up to four partitions divide-and-conquer keeps `top`'s quality
+/// and its split lines halve the work; on large coast-like outlines in more parts than
+/// partitions (divide_and_conquer_parts), also on one partition from 300,000 nodes. With two
+/// partitions otherwise too: it measured fastest at 2 threads on every family but the comb.
+/// With more, its recursion costs work on stars and combs while partition-and-cut's chains keep
+/// scaling, except along corridors, whose two walls fall in different chains: there
 /// divide-and-conquer's slabs (the spiral on 16 cores at 4-16 threads: 21-26 ms against 45-54;
 /// docs/parallel.md, "What automatic picks").
 ///
@@ -60,13 +81,19 @@ class Outline {
 /// A polygon found not simple gets the sequential engine's best effort: the parallel variants
 /// need a simple boundary and, after clipping their parts, fall back to it (a 84k-vertex
 /// country: 26 ms of parts thrown away, slower at 2 threads than at 1).
-Algorithm resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions, bool not_simple,
-                  Outline& outline) {
-  if (requested != Algorithm::automatic) return requested;
-  if (partitions < 2 || nodes < parallel_threshold || not_simple) return Algorithm::sequential;
-  if (outline.few_long_runs()) return Algorithm::mark_and_cut;
-  if (partitions == 2 || outline.corridors()) return Algorithm::divide_and_conquer;
-  return Algorithm::partition_and_cut;
+Choice resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions, bool not_simple,
+               Outline& outline) {
+  if (requested != Algorithm::automatic) return {requested, partitions};
+  if (nodes < parallel_threshold || not_simple) return {Algorithm::sequential, partitions};
+  const std::uint32_t dc_parts = divide_and_conquer_parts(partitions, outline);
+  if (partitions < 2) {
+    if (nodes >= 300'000 && dc_parts > 1) return {Algorithm::divide_and_conquer, dc_parts};
+    return {Algorithm::sequential, partitions};
+  }
+  if (outline.few_long_runs()) return {Algorithm::mark_and_cut, partitions};
+  if (partitions == 2 || outline.corridors()) return {Algorithm::divide_and_conquer, dc_parts};
+  if (partitions <= 4 && dc_parts > partitions) return {Algorithm::divide_and_conquer, dc_parts};
+  return {Algorithm::partition_and_cut, partitions};
 }
 
 /// With `delaunay` the clip only makes the triangulation the flips start from, and the CDT is
@@ -343,12 +370,15 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   bridge(options.check_simplicity, ctx);
   out.reserve(boundary_.size());
   Outline outline(clean_);
-  const Algorithm algorithm =
+  const Choice choice =
       resolve(options.algorithm, boundary_.size(), ctx.partitions, found_not_simple(), outline);
+  const Algorithm algorithm = choice.algorithm;
+  RunContext clip_ctx = ctx;
+  clip_ctx.partitions = choice.parts;
   std::uint32_t best_effort_vertex = 0;
   Options clip_options = options;
   clip_options.heuristic = start_of_flips(options, algorithm, outline);
-  if (!clip(algorithm, clip_options, ctx, out, best_effort_vertex) && !found_not_simple())
+  if (!clip(algorithm, clip_options, clip_ctx, out, best_effort_vertex) && !found_not_simple())
     findings_.push_back(why_not_valid(options.check_simplicity, best_effort_vertex));
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.

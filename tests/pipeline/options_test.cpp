@@ -110,6 +110,34 @@ TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
   }
 }
 
+// On large coast-like outlines (runs of 3 to 64 edges: random polygons with holes have 4)
+// automatic cuts divide-and-conquer into more parts than partitions, up to four partitions:
+// twice as many from 100,000 nodes, four times from 300,000, and from 300,000 also on one
+// partition (8 parts). Below 100,000 nodes, or past four partitions, as before.
+TEST(Options, AutomaticCutsLargeCoastLikeOutlinesIntoMoreParts) {
+  const auto same = [](const Polygon& polygon, unsigned partitions, Algorithm algorithm,
+                       unsigned parts) {
+    const auto chosen = triangulate(polygon, {.threads = 1, .partitions = partitions});
+    const auto named =
+        triangulate(polygon, {.algorithm = algorithm, .threads = 2, .partitions = parts});
+    EXPECT_EQ(chosen.status, Status::ok);
+    EXPECT_EQ(named.status, Status::ok);
+    return chosen.triangles == named.triangles;
+  };
+  const Polygon large = generate_polygon("random-holes", 120000, 3);
+  EXPECT_TRUE(same(large, 1, Algorithm::sequential, 1));
+  EXPECT_TRUE(same(large, 2, Algorithm::divide_and_conquer, 4));
+  EXPECT_FALSE(same(large, 2, Algorithm::divide_and_conquer, 2));
+  EXPECT_TRUE(same(large, 3, Algorithm::divide_and_conquer, 6));
+  EXPECT_TRUE(same(large, 8, Algorithm::partition_and_cut, 8));
+  const Polygon huge = generate_polygon("random-holes", 310000, 3);
+  EXPECT_TRUE(same(huge, 1, Algorithm::divide_and_conquer, 8));
+  EXPECT_TRUE(same(huge, 4, Algorithm::divide_and_conquer, 16));
+  const Polygon smaller = generate_polygon("random-holes", 60000, 3);
+  EXPECT_TRUE(same(smaller, 2, Algorithm::divide_and_conquer, 2));
+  EXPECT_TRUE(same(smaller, 4, Algorithm::partition_and_cut, 4));
+}
+
 // Few long runs monotone in x (a comb: 2; an outline convex or nearly so): mark-and-cut at any
 // partition count, 2 included, where divide-and-conquer's repair of the comb's base strip and
 // partition-and-cut's chains along its teeth cost more than they save.

@@ -72,7 +72,8 @@ namespace {
 // The one table of algorithm names.
 constexpr AlgorithmName names[] = {
     {"auto", Algorithm::automatic,
-     "small: sequential; 2 parts: divide-and-conquer; more: partition-and-cut"},
+     "small: sequential; 2 parts: divide-and-conquer; more: partition-and-cut;\n"
+     "                          large coastline-like, 1 to 4 parts: divide-and-conquer"},
     {"sequential", Algorithm::sequential, "FIST-style ear clipping on one thread"},
     {"partition-and-cut", Algorithm::partition_and_cut,
      "parallel: chains between landmarks, each clipped by its own task"},
