@@ -113,14 +113,17 @@ struct Variant {
   bool delaunay;
 };
 /// Every variant at k partitions: the sequential clipper too (its simplicity check and the
-/// CDT's flips are cut into k parts), and the CDT after the sequential and the parallel clip.
+/// CDT's flips are cut into k parts), the CDT after the sequential and the parallel clip, and
+/// automatic (the default: whichever it picks at k).
 constexpr Variant parallel_variants[] = {
     {"seq", pear::Algorithm::sequential, false},
     {"mc", pear::Algorithm::mark_and_cut, false},
     {"pc", pear::Algorithm::partition_and_cut, false},
     {"dc", pear::Algorithm::divide_and_conquer, false},
+    {"auto", pear::Algorithm::automatic, false},
     {"seq_cdt", pear::Algorithm::sequential, true},
     {"pc_cdt", pear::Algorithm::partition_and_cut, true},
+    {"auto_cdt", pear::Algorithm::automatic, true},
 };
 
 void write_profile(Json& out, const pear::RunProfile& profile, double wall) {

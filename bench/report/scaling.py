@@ -17,8 +17,10 @@ VARIANTS = [
     ("mc", "mark-and-cut"),
     ("pc", "partition-and-cut"),
     ("dc", "divide-and-conquer"),
+    ("auto", "automatic (what it picks at k)"),
     ("seq_cdt", "CDT, sequential clip"),
     ("pc_cdt", "CDT, partition-and-cut clip"),
+    ("auto_cdt", "CDT, automatic"),
 ]
 GROUPS = [("coast/", "the coasts"), ("synthetic/", "Koch-8, star, comb, spiral, holes grid"),
           ("random", "the random families")]
@@ -118,7 +120,10 @@ max(work / k, longest task), summed: the speedup k threads would give over one i
 greedy and memory free. It is a projection, not a measurement: the times measured at 1 to 16
 threads on a 16-core machine, with each phase's elapsed time beside this bound, are in
 [benchmarks.md](benchmarks.md#measured-on-16-cores-fig-9s-triangles) (`bench/threads.sh`). A variant whose work is below the sequential engine's (mark-and-cut: no
-queue) can exceed k. The last column is the CDT's own phases (adjacency build, partition, flips
+queue) can exceed k. The *automatic* rows are the default algorithm at k partitions
+(docs/parallel.md, "What automatic picks"): the bound of whichever variant it picks there, in
+the parts it picks (on large coast-like outlines divide-and-conquer in more parts than k). The
+last column is the CDT's own phases (adjacency build, partition, flips
 in the sets, border fix-up) by the same bound over their own work.
 
 Ranges of the bound, lowest to highest input:
