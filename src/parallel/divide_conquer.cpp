@@ -172,7 +172,8 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
 /// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
 bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
                        std::vector<SplitLine>& lines, EarHeuristic heuristic,
-                       MakeClipper make_clipper, const RunContext& ctx, TriangleList& out) {
+                       MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
+                       std::size_t& region_ordered) {
   std::vector<Slab> slabs;
   if (!split_into_parts(b, std::move(cycle), lines, ctx, slabs)) return false;
   std::vector<PartResult> parts(slabs.size());
@@ -194,6 +195,7 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
   ctx.run_tasks("gather", lists.size(), [&](std::size_t i) {
     std::copy(lists[i]->begin(), lists[i]->end(), out.begin() + offset[i]);
   });
+  region_ordered = offset[parts.size()];
   return true;
 }
 
@@ -201,7 +203,7 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
 
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                         MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
-                        std::uint32_t& best_effort_vertex) {
+                        std::uint32_t& best_effort_vertex, std::size_t& region_ordered) {
   std::vector<PieceCorner> cycle;
   std::vector<SplitLine> lines;
   ctx.run_serial("place split lines", [&] {
@@ -218,7 +220,8 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();
-    if (split_clip_repair(b, std::move(cycle), lines, heuristic, make_clipper, ctx, out))
+    if (split_clip_repair(b, std::move(cycle), lines, heuristic, make_clipper, ctx, out,
+                          region_ordered))
       return true;
     out.resize(start);
     phase = "fall back to sequential";  // RunProfile shows how often this happens

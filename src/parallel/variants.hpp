@@ -37,8 +37,12 @@ inline constexpr std::uint32_t no_node = UINT32_MAX;
 /// (the boundary was not weakly simple); best_effort_vertex then names where (caller's index).
 /// The parts, the holes the Steiner points leave and a fallback are clipped by clippers from
 /// `make_clipper` (the sequential engine).
+/// `region_ordered`: set to the size of `out` after the parts' triangles (part after part, each
+/// a slab of the plane; the holes around the Steiner points come after), or left where it was
+/// when the sequential engine did it all.
 [[gnu::noinline]] bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                                           MakeClipper make_clipper, const RunContext& ctx,
-                                          TriangleList& out, std::uint32_t& best_effort_vertex);
+                                          TriangleList& out, std::uint32_t& best_effort_vertex,
+                                          std::size_t& region_ordered);
 
 }  // namespace pear::detail

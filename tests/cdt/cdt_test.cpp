@@ -182,6 +182,38 @@ TEST(Cdt, SetsAreRunsOfTheClipOrderOnlyWhereChainsEmittedNearlyAll) {
   }
 }
 
+// Divide-and-conquer emits its triangles part after part, each a slab of the plane: runs of
+// that order are the flips' sets (no walk), but along corridors, which wind through every slab
+// (a spiral: the walk). The CDT either way, the same on any thread count.
+TEST(Cdt, DivideAndConquerSlabsAreSetsButAlongCorridors) {
+  struct Case {
+    const char* kind;
+    unsigned partitions;
+    bool runs;
+  };
+  for (const Case c : {Case{"koch", 4, true}, Case{"random-holes", 2, true},
+                       Case{"spiral", 4, false}, Case{"spiral", 2, false}}) {
+    SCOPED_TRACE(std::string(c.kind) + ", " + std::to_string(c.partitions) + " partitions");
+    const Polygon polygon = generate_polygon(c.kind, 30000, 3);
+    CdtCheck expect_cdt(polygon);
+    Triangles first;
+    for (unsigned threads : {1u, 2u, 4u}) {
+      RunProfile profile;
+      const auto result = constrained_delaunay(polygon, Algorithm::divide_and_conquer, threads,
+                                               c.partitions, &profile);
+      ASSERT_EQ(result.status, Status::ok);
+      EXPECT_EQ(tasks_of(profile, "clip parts"), c.partitions) << "split, as the test means";
+      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? c.partitions : 0u);
+      EXPECT_EQ(tasks_of(profile, "cdt partition"), c.runs ? 0u : 1u);
+      if (threads == 1) {
+        first = result.triangles;
+        expect_cdt(result.triangles);
+      }
+      EXPECT_EQ(result.triangles, first) << threads << " threads";
+    }
+  }
+}
+
 /// With `delaunay` the clip only picks where the flips start: from `fast` where the outline is
 /// runs of 3 to 64 edges monotone in x (random polygons with holes: 4, like coastlines), from the
 /// heuristic asked for where they are shorter (random polygons: 2.2) or below 20,000 nodes.
