@@ -150,68 +150,48 @@ TEST(Cdt, BordersPairedInRangesGiveTheCdt) {
   }
 }
 
+/// The CDT after `algorithm`'s clip at `partitions`: its flip sets runs of the clip order
+/// (`runs`) or pieces of the walk, the CDT, and the same triangles at 1, 2 and 4 threads.
+void expect_sets(const char* kind, Algorithm algorithm, unsigned partitions, bool runs) {
+  SCOPED_TRACE(std::string(kind) + ", " + std::to_string(partitions) + " partitions");
+  const Polygon polygon = generate_polygon(kind, 30000, 3);
+  CdtCheck expect_cdt(polygon);
+  Triangles first;
+  for (unsigned threads : {1u, 2u, 4u}) {
+    RunProfile profile;
+    const auto result = constrained_delaunay(polygon, algorithm, threads, partitions, &profile);
+    ASSERT_EQ(result.status, Status::ok);
+    EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), runs ? partitions : 0u);
+    EXPECT_EQ(tasks_of(profile, "cdt partition"), runs ? 0u : 1u);
+    if (algorithm == Algorithm::divide_and_conquer)
+      EXPECT_EQ(tasks_of(profile, "clip parts"), partitions) << "split, as the test means";
+    if (threads == 1) {
+      first = result.triangles;
+      expect_cdt(result.triangles);
+    }
+    EXPECT_EQ(result.triangles, first) << threads << " threads";
+  }
+}
+
 // Partition-and-cut emits its triangles chain after chain: the flips' sets are runs of that
 // order (no breadth-first walk) when nearly all came from chains, as on a star; a spiral's
 // chains leave half its triangles to the sequential finish, whose order is by ear quality, and
 // keeps the walk. Either way the CDT, and the same triangles on any thread count.
 TEST(Cdt, SetsAreRunsOfTheClipOrderOnlyWhereChainsEmittedNearlyAll) {
-  struct Case {
-    const char* kind;
-    unsigned partitions;
-    bool runs;
-  };
-  for (const Case c : {Case{"star", 8, true}, Case{"spiral", 8, false}, Case{"star", 2, true},
-                       Case{"spiral", 2, false}}) {
-    SCOPED_TRACE(std::string(c.kind) + ", " + std::to_string(c.partitions) + " partitions");
-    const Polygon polygon = generate_polygon(c.kind, 30000, 3);
-    CdtCheck expect_cdt(polygon);
-    Triangles first;
-    for (unsigned threads : {1u, 2u, 4u}) {
-      RunProfile profile;
-      const auto result = constrained_delaunay(polygon, Algorithm::partition_and_cut, threads,
-                                               c.partitions, &profile);
-      ASSERT_EQ(result.status, Status::ok);
-      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? c.partitions : 0u);
-      EXPECT_EQ(tasks_of(profile, "cdt partition"), c.runs ? 0u : 1u);
-      if (threads == 1) {
-        first = result.triangles;
-        expect_cdt(result.triangles);
-      }
-      EXPECT_EQ(result.triangles, first) << threads << " threads";
-    }
-  }
+  expect_sets("star", Algorithm::partition_and_cut, 8, true);
+  expect_sets("spiral", Algorithm::partition_and_cut, 8, false);
+  expect_sets("star", Algorithm::partition_and_cut, 2, true);
+  expect_sets("spiral", Algorithm::partition_and_cut, 2, false);
 }
 
 // Divide-and-conquer emits its triangles part after part, each a slab of the plane: runs of
 // that order are the flips' sets (no walk), but along corridors, which wind through every slab
 // (a spiral: the walk). The CDT either way, the same on any thread count.
 TEST(Cdt, DivideAndConquerSlabsAreSetsButAlongCorridors) {
-  struct Case {
-    const char* kind;
-    unsigned partitions;
-    bool runs;
-  };
-  for (const Case c : {Case{"koch", 4, true}, Case{"random-holes", 2, true},
-                       Case{"spiral", 4, false}, Case{"spiral", 2, false}}) {
-    SCOPED_TRACE(std::string(c.kind) + ", " + std::to_string(c.partitions) + " partitions");
-    const Polygon polygon = generate_polygon(c.kind, 30000, 3);
-    CdtCheck expect_cdt(polygon);
-    Triangles first;
-    for (unsigned threads : {1u, 2u, 4u}) {
-      RunProfile profile;
-      const auto result = constrained_delaunay(polygon, Algorithm::divide_and_conquer, threads,
-                                               c.partitions, &profile);
-      ASSERT_EQ(result.status, Status::ok);
-      EXPECT_EQ(tasks_of(profile, "clip parts"), c.partitions) << "split, as the test means";
-      EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), c.runs ? c.partitions : 0u);
-      EXPECT_EQ(tasks_of(profile, "cdt partition"), c.runs ? 0u : 1u);
-      if (threads == 1) {
-        first = result.triangles;
-        expect_cdt(result.triangles);
-      }
-      EXPECT_EQ(result.triangles, first) << threads << " threads";
-    }
-  }
+  expect_sets("koch", Algorithm::divide_and_conquer, 4, true);
+  expect_sets("random-holes", Algorithm::divide_and_conquer, 2, true);
+  expect_sets("spiral", Algorithm::divide_and_conquer, 4, false);
+  expect_sets("spiral", Algorithm::divide_and_conquer, 2, false);
 }
 
 /// With `delaunay` the clip only picks where the flips start: from `fast` where the outline is
