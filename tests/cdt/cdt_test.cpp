@@ -163,8 +163,9 @@ void expect_sets(const char* kind, Algorithm algorithm, unsigned partitions, boo
     ASSERT_EQ(result.status, Status::ok);
     EXPECT_EQ(tasks_of(profile, "cdt partition: clip order"), runs ? partitions : 0u);
     EXPECT_EQ(tasks_of(profile, "cdt partition"), runs ? 0u : 1u);
-    if (algorithm == Algorithm::divide_and_conquer)
+    if (algorithm == Algorithm::divide_and_conquer) {
       EXPECT_EQ(tasks_of(profile, "clip parts"), partitions) << "split, as the test means";
+    }
     if (threads == 1) {
       first = result.triangles;
       expect_cdt(result.triangles);

@@ -356,7 +356,9 @@ TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
         ctx.profile = &profile;
         const Verdict verdict = check.check(clean, ctx, true);
         EXPECT_EQ(verdict.violation, by_grid) << partitions << " partitions";
-        if (!by_grid) EXPECT_EQ(verdict.touching, Verdict::Touching::no);
+        if (!by_grid) {
+          EXPECT_EQ(verdict.touching, Verdict::Touching::no);
+        }
         const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
           return p.name == "check simplicity: run pairs";
         });
