@@ -56,9 +56,12 @@ struct Choice {
 /// small ones: South America's two halves 137 and 61 ms). Work/span bound at 2 partitions,
 /// 2 parts -> 4 or 8 (docs/parallel.md, "What automatic picks"): Australia 1.77 -> 1.92x,
 /// Greenland 1.80 -> 1.99x, South America 1.66 -> 2.23x, Eurasia 1.68 -> 2.62x.
+constexpr std::size_t more_parts_from = 100'000;  ///< nodes: 2 parts a partition
+constexpr std::size_t most_parts_from = 300'000;  ///< nodes: 4 a partition, and on one partition
+
 std::uint32_t divide_and_conquer_parts(std::uint32_t partitions, Outline& outline) {
-  if (outline.nodes() < 100'000 || !outline.coast_like()) return partitions;
-  return std::max(partitions, 2u) * (outline.nodes() < 300'000 ? 2 : 4);
+  if (outline.nodes() < more_parts_from || !outline.coast_like()) return partitions;
+  return std::max(partitions, 2u) * (outline.nodes() < most_parts_from ? 2 : 4);
 }
 
 /// `automatic` depends on the outline and the partitions, never on the threads: the output does
@@ -87,7 +90,8 @@ Choice resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions,
   if (nodes < parallel_threshold || not_simple) return {Algorithm::sequential, partitions};
   const std::uint32_t dc_parts = divide_and_conquer_parts(partitions, outline);
   if (partitions < 2) {
-    if (nodes >= 300'000 && dc_parts > 1) return {Algorithm::divide_and_conquer, dc_parts};
+    if (nodes >= most_parts_from && dc_parts > partitions)
+      return {Algorithm::divide_and_conquer, dc_parts};
     return {Algorithm::sequential, partitions};
   }
   if (outline.few_long_runs()) return {Algorithm::mark_and_cut, partitions};
