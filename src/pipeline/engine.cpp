@@ -391,8 +391,16 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   if (algorithm == Algorithm::divide_and_conquer && outline.corridors()) region_ordered_ = 0;
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
-  if (options.delaunay && status == Status::ok)
-    make_delaunay(caller_points(input), clean_, out, ctx, delaunay, region_ordered_);
+  if (options.delaunay && status == Status::ok) {
+    // Where automatic took mark-and-cut (few long runs: a comb, an outline nearly convex) the
+    // flips in sets cost more than they save: at 2 threads the 100k comb's CDT 0.77-0.99x the
+    // sequential CDT with sets, 0.99-1.02x flipping on one thread; a 100k ellipse's 0.73-0.78x
+    // and 0.96-1.00x.
+    RunContext flip_ctx = ctx;
+    if (options.algorithm == Algorithm::automatic && algorithm == Algorithm::mark_and_cut)
+      flip_ctx.partitions = 1;
+    make_delaunay(caller_points(input), clean_, out, flip_ctx, delaunay, region_ordered_);
+  }
   return status;
 }
 

@@ -158,6 +158,19 @@ TEST(Options, AutomaticTakesMarkAndCutWhereRunsAreFewAndLong) {
       ASSERT_EQ(chosen.status, Status::ok);
       EXPECT_EQ(chosen.triangles, mark_and_cut.triangles) << partitions << " partitions";
       EXPECT_NE(chosen.triangles, divide_and_conquer.triangles) << partitions << " partitions";
+      // With the CDT its flips run on one thread (no sets), and give the CDT.
+      RunProfile profile;
+      const auto cdt = triangulate(
+          polygon, {.delaunay = true, .threads = 2, .partitions = partitions, .profile = &profile});
+      ASSERT_EQ(cdt.status, Status::ok);
+      EXPECT_TRUE(validate(polygon, cdt.triangles, {.check_delaunay = true}).valid);
+      EXPECT_EQ(cdt.delaunay.flips_in_partitions, 0u);
+      const auto flip_phase = [&](const char* name) {
+        return std::any_of(profile.phases.begin(), profile.phases.end(),
+                           [&](const RunProfile::Phase& p) { return p.name == name; });
+      };
+      EXPECT_TRUE(flip_phase("cdt flip"));
+      EXPECT_FALSE(flip_phase("cdt flip sets"));
     }
   }
 }
