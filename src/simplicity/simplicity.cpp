@@ -391,25 +391,27 @@ std::size_t SimplicityCheck::walk_chain_pair(const Chain& chain, const Chain& ot
   return looks;
 }
 
-/// The edges' boxes, directions and runs monotone in x; false where the runs are not worth
-/// walking (too short, or long ones wound round each other past `budget` looks). Sets fold_,
-/// the smallest edge of a ring folding back (when `find_crossings`).
-bool SimplicityCheck::prepare_runs(const CleanPolygon& polygon, bool find_crossings,
-                                   std::size_t budget) {
+/// The edges' boxes, directions and runs monotone in x. Returns the smallest edge of a ring
+/// folding back (when `find_crossings`; else or without one, none), or nothing where the runs
+/// are not worth walking (too short, or long ones wound round each other past `budget` looks).
+std::optional<std::uint32_t> SimplicityCheck::prepare_runs(const CleanPolygon& polygon,
+                                                           bool find_crossings,
+                                                           std::size_t budget) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   const bool limited = budget != every_pair;
   edges_.boxes.resize(n);
   direction_.resize(n);
-  fold_ = link_edges(polygon, edges_, find_crossings,
-                     [&](std::uint32_t e, const Point& a, const Point& b) {
-                       edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y),
-                                          std::max(a.x, b.x), std::max(a.y, b.y)};
-                       direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
-                     });
-  if (!monotone_chains(polygon, limited ? 3 : 0)) return false;
+  const std::uint32_t fold = link_edges(
+      polygon, edges_, find_crossings, [&](std::uint32_t e, const Point& a, const Point& b) {
+        edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                           std::max(a.y, b.y)};
+        direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
+      });
+  if (!monotone_chains(polygon, limited ? 3 : 0)) return std::nullopt;
   // Long runs may wind around each other (a spiral): then a look at their pairs first, which
   // short runs (coasts: 5-7 edges) would pay as much for as for the walk.
-  return !(limited && chains_.size() * 64 < n && !chains_within(budget));
+  if (limited && chains_.size() * 64 < n && !chains_within(budget)) return std::nullopt;
+  return fold;
 }
 
 /// The runs [first, last) against every run after them that they meet in x. The looks are
@@ -433,8 +435,7 @@ SimplicityCheck::RunWalk SimplicityCheck::walk_runs(std::size_t first, std::size
       const bool apart = (other.y0 > chain.y1) | (chain.y0 > other.y1);
       looks += apart ? 1 : walk_chain_pair(chain, other, visit);
     }
-    if (looks >= flush_every || i + 1 == last) {
-      if (budget == every_pair) continue;
+    if (budget != every_pair && (looks >= flush_every || i + 1 == last)) {
       const std::size_t added = std::exchange(looks, 0);
       if (spent.fetch_add(added, std::memory_order_relaxed) + added > budget) {
         walk.over_budget = true;
@@ -449,14 +450,14 @@ SimplicityCheck::RunWalk SimplicityCheck::walk_runs(std::size_t first, std::size
 /// chains_limit edges: every pair, no budget).
 Verdict SimplicityCheck::check_few_chains(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  prepare_runs(polygon, find_crossings, every_pair);
+  const std::uint32_t fold = *prepare_runs(polygon, find_crossings, every_pair);
   std::atomic<std::size_t> spent{0};
   RunWalk walk = walk_runs(0, chains_.size(), find_crossings, every_pair, spent);
   // Without a fold, every pair that can conflict was looked at: `smallest` is the smallest
   // edge in any conflict. A run may hide a conflict behind a vertical fold-back within it (a
   // neighbour conflict, found by link_edges): then every pair.
-  if (find_crossings && fold_ != SmallestViolation::none) {
-    walk.smallest = std::min(walk.smallest, fold_);
+  if (find_crossings && fold != SmallestViolation::none) {
+    walk.smallest = std::min(walk.smallest, fold);
     const auto& boxes = edges_.boxes;
     for (std::uint32_t e = 0; e + 1 < n; ++e)
       for (std::uint32_t f = e + 1; f < n; ++f)
@@ -475,8 +476,8 @@ std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon
   const std::size_t budget = chains_budget * polygon.points.size();
   bool ready = false;
   ctx.run_serial("check simplicity", [&] {
-    ready = runs_worth_trying(polygon) && prepare_runs(polygon, true, budget) &&
-            fold_ == SmallestViolation::none;
+    ready = runs_worth_trying(polygon) &&
+            prepare_runs(polygon, true, budget) == SmallestViolation::none;
   });
   if (!ready) return std::nullopt;
   // Tasks of equal run counts, a few a partition so that stealing evens out their work.
@@ -523,15 +524,14 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     // runs are serial, the grid's search parallel (its span the shorter from four on). Where
     // the grid gives up (edges long against its cells: a comb's teeth), the runs before the
     // sweep in slabs: on the comb 1.7 ms against two slabs of 8 ms each.
-    const auto by_chains = [&] { return check_chains(polygon, ctx); };
     const bool runs_first = ctx.partitions <= 2;
     if (runs_first)
-      if (auto decided = by_chains()) return *decided;
+      if (auto decided = check_chains(polygon, ctx)) return *decided;
     index_edges(polygon, ctx);  // find_violation's steps, with the runs before the sweep
     SmallestViolation found;
     if (!check_on_grid(edges_, GridLimits{}, ctx, root_, found)) {
       if (!runs_first)
-        if (auto decided = by_chains()) return *decided;
+        if (auto decided = check_chains(polygon, ctx)) return *decided;
       sweep_in_slabs(edges_, slab_count(edges_.size(), ctx.partitions), ctx, found);
     }
     if (found.get() != SmallestViolation::none) verdict.violation = found.get();

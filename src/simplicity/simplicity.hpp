@@ -193,7 +193,8 @@ class SimplicityCheck {
   /// Every pair of edges in two runs whose boxes meet; none when that would look at more than
   /// `budget` pairs of runs and edges (the grid is then the better index).
   static constexpr std::size_t every_pair = std::numeric_limits<std::size_t>::max();
-  bool prepare_runs(const CleanPolygon& polygon, bool find_crossings, std::size_t budget);
+  std::optional<std::uint32_t> prepare_runs(const CleanPolygon& polygon, bool find_crossings,
+                                            std::size_t budget);
   /// What a walk over pairs of runs found: the smallest edge in a conflict, touching edges.
   struct RunWalk {
     std::uint32_t smallest = SmallestViolation::none;
@@ -225,7 +226,6 @@ class SimplicityCheck {
   std::vector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
   std::vector<Point> sorted_points_;    ///< repeats_a_position's copy
-  std::uint32_t fold_ = 0;              ///< prepare_runs': the smallest edge folding back
 
   /// check_all_pairs' edge boxes, a column per side (padded for four-wide loads), and the
   /// pairs to test as rows (geometry/box_scan.hpp).
