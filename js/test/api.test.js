@@ -120,6 +120,42 @@ test('memory: repeated calls (single, batch, validator) do not grow the wasm hea
   assert.equal(memory.buffer.byteLength, warm);
 });
 
+// The loader keeps typed views of wasm memory and makes them again only once memory grew (its
+// old buffer is then detached): a result read after a call that grew the heap must be read
+// through the new views, in every kind of call.
+test('memory: results stay right across calls that grow the heap', () => {
+  const square = [0, 0, 4, 0, 4, 4, 0, 4];
+  const t = new Triangulator();
+  const small = t.triangulate(square).triangles.slice();
+  assert.equal(small.length, 6);
+  const grow = (vertices) => {
+    const circle = new Float64Array(2 * vertices);
+    for (let i = 0; i < vertices; ++i) {
+      circle[2 * i] = Math.cos((2 * Math.PI * i) / vertices);
+      circle[2 * i + 1] = Math.sin((2 * Math.PI * i) / vertices);
+    }
+    return circle;
+  };
+  const before = memory.buffer.byteLength;
+  const circle = grow(Math.ceil(before / 16) + 1000);  // its points alone outgrow the heap
+  const result = t.triangulate(circle);
+  assert.ok(memory.buffer.byteLength > before);
+  assert.equal(result.status, 'ok');
+  const indices = result.triangles;
+  assert.equal(indices.length, 3 * (circle.length / 2 - 2));
+  assert.ok(indices.every((v) => v < circle.length / 2));
+  const out = new Uint32Array(indices.length);
+  assert.equal(result.copyTrianglesTo(out), indices.length);
+  assert.deepEqual(out, indices);
+  assert.deepEqual(t.triangulate(square).triangles, small);
+  assert.deepEqual(triangulate(square), small);
+  const again = memory.buffer.byteLength;
+  const larger = grow(Math.ceil(again / 16) + 1000);
+  assert.equal(triangulate(larger).length, 3 * (larger.length / 2 - 2));
+  assert.ok(memory.buffer.byteLength > again);
+  assert.equal(validate(square, null, small).valid, true);
+});
+
 test('no allocation on the JavaScript side: Triangulator.triangulate + copyTrianglesTo', (t) => {
   if (typeof globalThis.gc !== 'function') {
     t.skip('needs node --expose-gc');

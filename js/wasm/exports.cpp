@@ -27,6 +27,11 @@ struct Results {
   std::uint32_t flips = 0;  ///< CDT flips
 };
 
+/// Where pear_polygon made room: the points' and the ring offsets' addresses.
+struct Room {
+  std::uint32_t points = 0, ring_offsets = 0;
+};
+
 /// A batch's extra results: per polygon offsets and statuses (see pear::BatchTriangulation).
 struct BatchResults {
   std::uint32_t triangle_offsets = 0;    ///< polygons + 1 uint32
@@ -55,6 +60,7 @@ struct Session {
   pear::Triangulation<std::uint32_t> result;
   std::vector<std::uint32_t> diagnostics;
   Results results;
+  Room room;
   // The batch: offsets come as uint32 and are widened to the int64 of pear::PolygonBatch.
   std::vector<std::uint32_t> batch_offsets_in;
   std::vector<std::int64_t> batch_ring_offsets, batch_polygon_offsets;
@@ -100,11 +106,14 @@ PEAR_WASM_EXPORT(pear_points)(std::uint32_t count)->double* {
   return &s.points.data()->x;
 }
 
-/// Room for `count` ring offsets (uint32); returns its address.
-PEAR_WASM_EXPORT(pear_ring_offsets)(std::uint32_t count)->std::uint32_t* {
+/// Room for a polygon's `points` points (x, y interleaved doubles) and `offsets` ring offsets
+/// (uint32), in one call: one crossing from JavaScript a polygon, not two. Returns where.
+PEAR_WASM_EXPORT(pear_polygon)(std::uint32_t points, std::uint32_t offsets)->const Room* {
   Session& s = session();
-  s.ring_offsets.resize(count);
-  return s.ring_offsets.data();
+  s.points.resize(points);
+  s.ring_offsets.resize(offsets);
+  s.room = {address(s.points.data()), address(s.ring_offsets.data())};
+  return &s.room;
 }
 
 /// Triangulates the first `points` points in rings given by the first `offsets` ring offsets.
@@ -175,8 +184,8 @@ PEAR_WASM_EXPORT(pear_triangle_input)(std::uint32_t count)->std::uint32_t* {
   return s.triangles_in.data()->data();
 }
 
-/// Validates the first `triangles` triangles against the polygon in pear_points and
-/// pear_ring_offsets (pear::validate); `check_delaunay` also asks for a CDT.
+/// Validates the first `triangles` triangles against the polygon pear_polygon made room for
+/// (pear::validate); `check_delaunay` also asks for a CDT.
 PEAR_WASM_EXPORT(pear_validate)
 (std::uint32_t points, std::uint32_t offsets, std::uint32_t triangles, std::uint32_t check_delaunay)
     ->const Report* {
