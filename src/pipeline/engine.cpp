@@ -20,7 +20,10 @@ constexpr std::size_t parallel_threshold = 20'000;
 /// when asked.
 class Outline {
  public:
-  explicit Outline(const CleanPolygon& clean) : clean_(clean) {}
+  /// `runs`: x_reversals(clean) where the simplicity check counted them (in parts), else
+  /// counted here when first asked.
+  Outline(const CleanPolygon& clean, std::optional<std::size_t> runs)
+      : clean_(clean), runs_(runs.value_or(unknown)) {}
   std::size_t nodes() const { return clean_.points.size(); }
   std::size_t runs() {
     if (runs_ == unknown) runs_ = x_reversals(clean_);
@@ -374,7 +377,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   check(options.check_simplicity, ctx);
   bridge(options.check_simplicity, ctx);
   out.reserve(boundary_.size());
-  Outline outline(clean_);
+  Outline outline(clean_, simplicity_.x_reversals_counted());
   const Choice choice =
       resolve(options.algorithm, boundary_.size(), ctx.partitions, found_not_simple(), outline);
   const Algorithm algorithm = choice.algorithm;

@@ -8,6 +8,7 @@
 #include "geometry/box_scan.hpp"
 #include "geometry/segments.hpp"
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 #include "pear/predicates.hpp"
 
 namespace pear::detail {
@@ -236,19 +237,25 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
       chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
     }
   }
-  detail::sort(chains_.begin(), chains_.end(),
-               [](const Chain& a, const Chain& b) { return a.x0 < b.x0; });
+  detail::sort(chains_.begin(), chains_.end(), chain_before);
   return true;
 }
 
 namespace {
 
-/// Whether the runs monotone in x are worth trying past chains_limit: not when they are short
-/// (fractals, stars, grids of small holes: 1.5-2.3 edges a run), nor when there are more than a
-/// few long ones (they may be wound around each other, as a spiral's are).
-bool runs_worth_trying(const CleanPolygon& polygon) {
-  const std::size_t runs = x_reversals(polygon), n = polygon.points.size();
+/// Whether the runs monotone in x (about `runs`, x_reversals, among n edges) are worth trying
+/// past chains_limit: not when they are short (fractals, stars, grids of small holes: 1.5-2.3
+/// edges a run), nor when there are more than a few long ones (they may be wound around each
+/// other, as a spiral's are).
+bool runs_worth_trying(std::size_t runs, std::size_t n) {
   return runs * 3 <= n && (runs <= 16 || runs * 64 >= n);
+}
+
+/// Tasks for the runs' preparation: in parts from 32,768 edges where the run is parallel or
+/// partitioned (the same runs either way), a few a partition so that stealing evens them out.
+std::size_t runs_preparation_tasks(std::size_t n, const RunContext& ctx) {
+  if (!PEAR_HAS_THREADS || !(ctx.parallel() || ctx.partitions > 1)) return 1;
+  return std::clamp<std::size_t>(n / 16384, 1, 4 * std::max<std::size_t>(ctx.partitions, 2));
 }
 
 /// The few-edges strategies' shared set-up, sequentially: each edge's successor, its box handed
@@ -473,12 +480,19 @@ Verdict SimplicityCheck::check_few_chains(const CleanPolygon& polygon, bool find
 /// where a ring folds back (a run may hide a conflict behind it: the grid finds it).
 std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon,
                                                      const RunContext& ctx) {
-  const std::size_t budget = chains_budget * polygon.points.size();
+  const std::size_t n = polygon.points.size(), budget = chains_budget * n;
   bool ready = false;
-  ctx.run_serial("check simplicity", [&] {
-    ready = runs_worth_trying(polygon) &&
-            prepare_runs(polygon, true, budget) == SmallestViolation::none;
-  });
+  if (const std::size_t tasks = runs_preparation_tasks(n, ctx); tasks > 1) {
+    reversals_ = x_reversals(polygon, ctx, tasks);
+    ready = runs_worth_trying(*reversals_, n) &&
+            prepare_runs_in_parts(polygon, budget, ctx, tasks) == SmallestViolation::none;
+  } else {
+    ctx.run_serial("check simplicity", [&] {
+      reversals_ = x_reversals(polygon);
+      ready = runs_worth_trying(*reversals_, n) &&
+              prepare_runs(polygon, true, budget) == SmallestViolation::none;
+    });
+  }
   if (!ready) return std::nullopt;
   // Tasks of equal run counts, a few a partition so that stealing evens out their work.
   const std::size_t runs = chains_.size();
@@ -509,6 +523,7 @@ bool SimplicityCheck::repeats_a_position(const CleanPolygon& polygon) {
 Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ctx,
                                bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  reversals_.reset();
   Verdict verdict;
   // Without the check, past the few edges whose box rows are quickest (a sort of a county's
   // 18 points mispredicts more than its rows cost), whether a position repeats.

@@ -143,6 +143,8 @@ struct Verdict {
 /// How often the rings turn back in x: about the number of runs of edges monotone in x (n over
 /// 1.5-2.3 on fractals, stars and grids of holes, 5-15 on coastlines, a few on combs and spirals).
 std::size_t x_reversals(const CleanPolygon& polygon);
+/// The same count in `tasks` tasks on ctx (runs_in_parts.cpp).
+std::size_t x_reversals(const CleanPolygon& polygon, const RunContext& ctx, std::size_t tasks);
 
 class SimplicityCheck {
  public:
@@ -186,6 +188,13 @@ class SimplicityCheck {
   bool unresolvable_conflict_at(const CleanPolygon& polygon, std::uint32_t e,
                                 const RunContext& ctx);
 
+  /// The runs monotone in x the last check by runs cut the rings into (for tests: serially and
+  /// in parts the same).
+  std::size_t runs() const { return chains_.size(); }
+  /// x_reversals of the last check's polygon where it counted them (the runs tried past
+  /// chains_limit), for the engine's choices; T-junction splits do not change them.
+  std::optional<std::size_t> x_reversals_counted() const { return reversals_; }
+
  private:
   void index_edges(const CleanPolygon& polygon, const RunContext& ctx);
   bool repeats_a_position(const CleanPolygon& polygon);
@@ -195,6 +204,16 @@ class SimplicityCheck {
   static constexpr std::size_t every_pair = std::numeric_limits<std::size_t>::max();
   std::optional<std::uint32_t> prepare_runs(const CleanPolygon& polygon, bool find_crossings,
                                             std::size_t budget);
+  /// prepare_runs(polygon, true, budget) in `tasks` tasks (runs_in_parts.cpp): the same fold,
+  /// runs and order.
+  std::optional<std::uint32_t> prepare_runs_in_parts(const CleanPolygon& polygon,
+                                                     std::size_t budget, const RunContext& ctx,
+                                                     std::size_t tasks);
+  std::uint32_t link_edges_in_parts(const CleanPolygon& polygon, const RunContext& ctx,
+                                    std::size_t tasks);
+  bool cut_runs_in_parts(const CleanPolygon& polygon, const RunContext& ctx, std::size_t tasks);
+  void finish_runs_in_parts(const RunContext& ctx, std::size_t tasks);
+  void sort_runs_in_parts(const RunContext& ctx, std::size_t tasks);
   /// What a walk over pairs of runs found: the smallest edge in a conflict, touching edges.
   struct RunWalk {
     std::uint32_t smallest = SmallestViolation::none;
@@ -221,7 +240,14 @@ class SimplicityCheck {
     bool decreasing;
     double x0, x1, y0, y1;
   };
+  /// The order of chains_: by where their x-ranges start, then by position (a total order,
+  /// so that runs sorted in parts come out as sorted at once).
+  static bool chain_before(const Chain& a, const Chain& b) {
+    return a.x0 < b.x0 || (a.x0 == b.x0 && a.begin < b.begin);
+  }
   std::vector<Chain> chains_;
+  std::vector<std::uint32_t> run_start_;  ///< each ring's first run's first edge (in parts)
+  std::optional<std::size_t> reversals_;  ///< x_reversals_counted()
   std::vector<std::uint32_t> chain_order_;
   std::vector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
   std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1

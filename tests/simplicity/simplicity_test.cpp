@@ -12,6 +12,7 @@
 
 #include "clean/clean.hpp"
 #include "gtest_corpus.hpp"
+#include "pear/config.hpp"
 #include "pear/generate.hpp"
 #include "pear/predicates.hpp"
 #include "pipeline/threading.hpp"
@@ -369,6 +370,103 @@ TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
   }
 }
 
+/// The runs' preparation in parts (runs_in_parts.cpp) against the serial one: an outline with
+/// runs of about 12 edges, vertical steps (edges of no direction in x, some at a ring's first
+/// point) and three holes, of sizes that move the tasks' ranges, checked on one partition
+/// serially and on two partitions in parts on 1, 2 and 4 threads: the same runs, the same
+/// count of reversals (also in 1 to 64 tasks), and with vertices swapped far apart the
+/// smallest conflict the grid finds; without, none and no touching. Both times the runs
+/// decide (their pairs are walked), in parts where asked.
+TEST(Simplicity, RunsPreparedInPartsDecideAsTheSerialRuns) {
+  const auto ripple = [](std::size_t n, double radius, double x, bool clockwise) {
+    Ring ring;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double r = radius * (1 + 2e-4 * std::sin(2 * M_PI * static_cast<double>(i % 12) / 12));
+      const double angle = (clockwise ? -2 : 2) * M_PI * static_cast<double>(i) / n;
+      const Point p{x + r * std::cos(angle), r * std::sin(angle)};
+      // Every 50th point is reached by a vertical step and a level one.
+      if (i % 50 == 0 && !ring.empty()) ring.push_back({ring.back().x, p.y});
+      ring.push_back(p);
+    }
+    // And the ring closes with one: its first edge comes after a vertical one.
+    ring.push_back({ring.front().x, ring.back().y});
+    return ring;
+  };
+  const ThreadContexts contexts;
+  std::mt19937 rng(5);
+  for (int moved = 0; moved <= 6; ++moved) {
+    // Sizes that move the tasks' ranges against the runs.
+    const std::size_t n = 60000 + 7 * static_cast<std::size_t>(moved);
+    Polygon polygon{ripple(n, 1000, 0, false), ripple(4000, 100, -500, true),
+                    ripple(4000 + moved, 100, 0, true), ripple(4000, 100, 500, true)};
+    for (int m = 0; m < moved; ++m) {
+      Ring& ring = polygon[static_cast<std::size_t>(m % 2 == 0 ? 0 : 1 + m % 3)];
+      std::uniform_int_distribution<std::size_t> pick(0, ring.size() - 1);
+      std::swap(ring[pick(rng)], ring[pick(rng)]);
+    }
+    SCOPED_TRACE(std::to_string(moved) + " swaps");
+    const CleanPolygon clean = cleaned(polygon);
+    ASSERT_LE(x_reversals(clean) * 3, clean.points.size()) << "runs long enough to be tried";
+    for (std::size_t tasks = 1; tasks <= 64; ++tasks)
+      ASSERT_EQ(x_reversals(clean, contexts.list.back(), tasks), x_reversals(clean)) << tasks;
+    SimplicityCheck check;
+    const auto by_grid = check.find_violation(clean, RunContext{}, Method::grid_only);
+    ASSERT_EQ(by_grid.has_value(), moved > 0);
+    const auto decide = [&](RunContext ctx, std::uint32_t partitions, bool in_parts) {
+      RunProfile profile;
+      ctx.partitions = partitions;
+      ctx.profile = &profile;
+      const Verdict verdict = check.check(clean, ctx, true);
+      const auto ran = [&](std::string_view phase) {
+        return std::any_of(profile.phases.begin(), profile.phases.end(),
+                           [&](const auto& p) { return p.name == phase; });
+      };
+      EXPECT_TRUE(ran("check simplicity: run pairs")) << "the runs decided";
+      EXPECT_EQ(ran("check simplicity: runs"), in_parts);
+      return verdict;
+    };
+    const Verdict serial = decide(RunContext{}, 1, false);
+    const std::size_t runs = check.runs();
+    EXPECT_EQ(check.x_reversals_counted(), x_reversals(clean));
+    EXPECT_EQ(serial.violation, by_grid);
+    if (!by_grid) {
+      EXPECT_EQ(serial.touching, Verdict::Touching::no);
+    }
+    for (const RunContext& given : contexts.list) {
+      const Verdict parts = decide(given, 2, PEAR_HAS_THREADS != 0);
+      EXPECT_EQ(parts.violation, serial.violation);
+      EXPECT_EQ(parts.touching, serial.touching);
+      EXPECT_EQ(check.runs(), runs) << "no run cut at a ring's first point";
+      EXPECT_EQ(check.x_reversals_counted(), x_reversals(clean)) << "counted in parts";
+    }
+  }
+}
+
+/// Runs of four edges each (a snake: up the left in steps that zigzag in x, down the right),
+/// twelve sizes, so that the border between the preparation's two tasks falls on every place
+/// in a run, also where the direction turns: the same runs in parts as serially. (Their pairs
+/// are too many here, all the left side's runs span one x-range: the grid decides.)
+TEST(Simplicity, RunsPreparedInPartsCutWhereTheTasksMeet) {
+  const auto zig = [](std::size_t i) { return static_cast<double>(4 - std::abs(int(i % 8) - 4)); };
+  for (std::size_t extra = 0; extra < 12; ++extra) {
+    const std::size_t m = 20000 + extra;
+    Ring ring;
+    for (std::size_t i = 0; i < m; ++i) ring.push_back({zig(i), static_cast<double>(i)});
+    for (std::size_t i = m; i-- > 0;) ring.push_back({10 + zig(i), static_cast<double>(i)});
+    const CleanPolygon clean = cleaned(Polygon{ring});
+    SCOPED_TRACE(std::to_string(m) + " points a side");
+    SimplicityCheck check;
+    const Verdict serial = check.check(clean, RunContext{}, true);
+    const std::size_t runs = check.runs();
+    ASSERT_GT(runs, clean.points.size() / 5) << "runs of four edges, prepared";
+    const Verdict parts = check.check(clean, RunContext{.partitions = 2}, true);
+    EXPECT_EQ(check.runs(), runs);
+    EXPECT_FALSE(parts.violation.has_value());
+    EXPECT_EQ(parts.violation, serial.violation);
+    EXPECT_EQ(parts.touching, serial.touching);
+  }
+}
+
 TEST(Simplicity, SweepFindsOneCrossingAmongManyEdges) {
   // A random star (long edges packed close: the grid gives up) with two radii swapped.
   Polygon star = generate_polygon("star", 20000, 5);
@@ -409,7 +507,9 @@ TEST(Simplicity, RunsDecideWhereTheGridGivesUpPastTwoPartitions) {
     for (const auto& phase : profile.phases) phases.push_back(phase.name);
     EXPECT_NE(std::find(phases.begin(), phases.end(), "check simplicity: root grid count"),
               phases.end());
-    EXPECT_NE(std::find(phases.begin(), phases.end(), "check simplicity"), phases.end());
+    // The runs, prepared in parts on partitions (serially in a build without threads).
+    const char* runs = PEAR_HAS_THREADS ? "check simplicity: runs" : "check simplicity";
+    EXPECT_NE(std::find(phases.begin(), phases.end(), runs), phases.end());
     EXPECT_EQ(std::find(phases.begin(), phases.end(), "check simplicity: sweep slabs"),
               phases.end());
   }
