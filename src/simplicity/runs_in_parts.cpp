@@ -209,15 +209,7 @@ void SimplicityCheck::finish_runs_in_parts(const RunContext& ctx, std::size_t ta
       for (std::uint32_t p = chain.begin; direction == 0 && p < chain.end; ++p)
         direction = direction_[chain_order_[p]];
       chain.decreasing = direction < 0;
-      if (chain.decreasing)
-        std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
-      chain.x0 = edges_.boxes[chain_order_[chain.begin]].x0;
-      chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
-      chain.y0 = INFINITY, chain.y1 = -INFINITY;
-      for (std::uint32_t i = chain.begin; i < chain.end; ++i) {
-        const EdgeBox& box = chain_boxes_[i] = edges_.boxes[chain_order_[i]];
-        chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
-      }
+      finish_run(chain);
     }
   });
 }

@@ -226,19 +226,22 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
   }
   if (chains_.size() * min_chain_edges > chain_order_.size() + min_chain_edges) return false;
   chain_boxes_.resize(chain_order_.size());
-  for (Chain& chain : chains_) {
-    if (chain.decreasing)
-      std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
-    chain.x0 = edges_.boxes[chain_order_[chain.begin]].x0;
-    chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
-    chain.y0 = INFINITY, chain.y1 = -INFINITY;
-    for (std::uint32_t i = chain.begin; i < chain.end; ++i) {
-      const EdgeBox& box = chain_boxes_[i] = edges_.boxes[chain_order_[i]];
-      chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
-    }
-  }
+  for (Chain& chain : chains_) finish_run(chain);
   detail::sort(chains_.begin(), chains_.end(), chain_before);
   return true;
+}
+
+/// A run's edges in increasing x, its boxes in that order, and its x- and y-range.
+void SimplicityCheck::finish_run(Chain& chain) {
+  if (chain.decreasing)
+    std::reverse(chain_order_.begin() + chain.begin, chain_order_.begin() + chain.end);
+  chain.x0 = edges_.boxes[chain_order_[chain.begin]].x0;
+  chain.x1 = edges_.boxes[chain_order_[chain.end - 1]].x1;
+  chain.y0 = INFINITY, chain.y1 = -INFINITY;
+  for (std::uint32_t i = chain.begin; i < chain.end; ++i) {
+    const EdgeBox& box = chain_boxes_[i] = edges_.boxes[chain_order_[i]];
+    chain.y0 = std::min(chain.y0, box.y0), chain.y1 = std::max(chain.y1, box.y1);
+  }
 }
 
 namespace {

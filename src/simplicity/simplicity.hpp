@@ -227,6 +227,7 @@ class SimplicityCheck {
   bool monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges);
   bool chains_within(std::size_t budget) const;
   struct Chain;
+  void finish_run(Chain& chain);
   template <class Visit>
   std::size_t walk_chain_pair(const Chain& chain, const Chain& other, Visit&& visit) const;
 
