@@ -2,7 +2,8 @@
 # ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs) and of the
 # parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads), hole
 # bridging in parts (the searches as tasks at 2-8 threads) and the parallel CDT's cases (flips in
-# breadth-first sets, border rounds, the bucketed adjacency build) and cleaning in parallel passes.
+# breadth-first sets, border rounds, the bucketed adjacency build), cleaning in parallel passes
+# and the simplicity check's runs (prepared and walked in tasks).
 # Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
 # The sanitizer build is separate: only the library and the scheduler tests are compiled.
 set -euo pipefail
@@ -27,7 +28,8 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/cdt/cdt_test \
   tests/cdt/cdt_mesh_test \
   tests/pipeline/batch_test \
-  tests/pipeline/clean_test
+  tests/pipeline/clean_test \
+  tests/simplicity/simplicity_test
 
 # halt_on_error: the first report fails the run (exit code 66), so CI cannot miss one.
 export TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1 ${TSAN_OPTIONS:-}"
@@ -42,3 +44,4 @@ meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 "$build/tests/cdt/cdt_mesh_test" --gtest_filter='Families/MeshBuild.*/0'
 "$build/tests/pipeline/batch_test" --gtest_filter='Batch.SameAsOneCall*:Batch.OnTheCallersExecutor'
 "$build/tests/pipeline/clean_test"
+"$build/tests/simplicity/simplicity_test" --gtest_filter='Simplicity.RunsPrepared*:Simplicity.RunPairsInTasks*'
