@@ -13,11 +13,6 @@
 namespace pear::detail {
 namespace {
 
-/// Edge e's direction in x, from its point to the next of its ring: -1, 0 or +1.
-std::int8_t x_direction(const std::vector<Point>& pts, std::uint32_t e, std::uint32_t next) {
-  return static_cast<std::int8_t>((pts[next].x > pts[e].x) - (pts[next].x < pts[e].x));
-}
-
 /// The ring of edge (or position) e.
 std::size_t ring_of(const CleanPolygon& polygon, std::uint32_t e) {
   const auto& starts = polygon.ring_starts;
@@ -92,9 +87,9 @@ std::size_t x_reversals(const CleanPolygon& polygon, const RunContext& ctx, std:
                   before = 0;
                   for (std::uint32_t i = e == ring_first ? ring_end - 1 : e - 1;
                        before == 0 && i != e; i = i == ring_first ? ring_end - 1 : i - 1)
-                    before = x_direction(pts, i, next(i));
+                    before = x_direction(pts[i], pts[next(i)]);
                 }
-                const int d = x_direction(pts, e, next(e));
+                const int d = x_direction(pts[e], pts[next(e)]);
                 reversals += d * before < 0;
                 before = d != 0 ? d : before;
               });
@@ -137,9 +132,8 @@ std::uint32_t SimplicityCheck::link_edges_in_parts(const CleanPolygon& polygon,
                 const std::uint32_t before = e == ring_first ? ring_end - 1 : e - 1;
                 edges_.next[e] = f;
                 const Point &a = pts[e], &b = pts[f], &p = pts[before];
-                edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                                   std::max(a.y, b.y)};
-                direction_[e] = x_direction(pts, e, f);
+                edges_.boxes[e] = edge_box(a, b);
+                direction_[e] = x_direction(a, b);
                 if (before < smallest && orient2d(p, a, b) == 0 &&
                     (on_open_segment(p, a, b) || on_open_segment(b, p, a) || p == b))
                   smallest = std::min(before, e);
@@ -158,19 +152,8 @@ bool SimplicityCheck::cut_runs_in_parts(const CleanPolygon& polygon, const RunCo
                                         std::size_t tasks) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   run_start_.resize(polygon.ring_count());
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
-    std::int8_t last = 0;
-    run_start_[r] = first;
-    for (std::uint32_t i = first; i < end; ++i) {
-      if (direction_[i] == 0) continue;
-      if (last != 0 && direction_[i] != last) {
-        run_start_[r] = i;
-        break;
-      }
-      last = direction_[i];
-    }
-  }
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r)
+    run_start_[r] = first_turn(polygon.ring_starts[r], polygon.ring_starts[r + 1]);
   const auto walk = [&](std::size_t t, auto&& at_position) {
     walk_run_positions(polygon, run_start_, direction_, range_start(n, t, tasks),
                        range_start(n, t + 1, tasks), at_position);

@@ -122,8 +122,7 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
     EdgeBox all = {pts[i * chunk].x, pts[i * chunk].y, pts[i * chunk].x, pts[i * chunk].y};
     for (std::size_t e = i * chunk; e < end; ++e) {
       const Point &a = pts[e], &b = pts[edges_.next[e]];
-      edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                         std::max(a.y, b.y)};
+      edges_.boxes[e] = edge_box(a, b);
       all = merged(all, edges_.boxes[e]);
     }
     bounds[i] = all;
@@ -198,17 +197,7 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
   chains_.clear();
   for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
     const std::uint32_t first = polygon.ring_starts[r], end = polygon.ring_starts[r + 1];
-    // Start where the direction turns, so that no run wraps around the ring's first point.
-    std::uint32_t start = first;
-    std::int8_t last = 0;
-    for (std::uint32_t i = first; i < end; ++i) {
-      if (direction_[i] == 0) continue;
-      if (last != 0 && direction_[i] != last) {
-        start = i;
-        break;
-      }
-      last = direction_[i];
-    }
+    const std::uint32_t start = first_turn(first, end);
     std::int8_t direction = 0;
     for (std::uint32_t e = start, step = 0; step < end - first; ++step) {
       const std::int8_t d = direction_[e];
@@ -229,6 +218,16 @@ bool SimplicityCheck::monotone_chains(const CleanPolygon& polygon, std::size_t m
   for (Chain& chain : chains_) finish_run(chain);
   detail::sort(chains_.begin(), chains_.end(), chain_before);
   return true;
+}
+
+std::uint32_t SimplicityCheck::first_turn(std::uint32_t first, std::uint32_t end) const {
+  std::int8_t last = 0;
+  for (std::uint32_t i = first; i < end; ++i) {
+    if (direction_[i] == 0) continue;
+    if (last != 0 && direction_[i] != last) return i;
+    last = direction_[i];
+  }
+  return first;
 }
 
 /// A run's edges in increasing x, its boxes in that order, and its x- and y-range.
@@ -411,12 +410,11 @@ std::optional<std::uint32_t> SimplicityCheck::prepare_runs(const CleanPolygon& p
   const bool limited = budget != every_pair;
   edges_.boxes.resize(n);
   direction_.resize(n);
-  const std::uint32_t fold = link_edges(
-      polygon, edges_, find_crossings, [&](std::uint32_t e, const Point& a, const Point& b) {
-        edges_.boxes[e] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                           std::max(a.y, b.y)};
-        direction_[e] = static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
-      });
+  const std::uint32_t fold = link_edges(polygon, edges_, find_crossings,
+                                        [&](std::uint32_t e, const Point& a, const Point& b) {
+                                          edges_.boxes[e] = edge_box(a, b);
+                                          direction_[e] = x_direction(a, b);
+                                        });
   if (!monotone_chains(polygon, limited ? 3 : 0)) return std::nullopt;
   // Long runs may wind around each other (a spiral): then a look at their pairs first, which
   // short runs (coasts: 5-7 edges) would pay as much for as for the walk.

@@ -32,6 +32,16 @@ inline EdgeBox merged(const EdgeBox& a, const EdgeBox& b) {
   return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
+/// The box of the edge from a to b.
+inline EdgeBox edge_box(const Point& a, const Point& b) {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
+/// The direction in x of the edge from a to b: -1, 0 (vertical) or +1.
+inline std::int8_t x_direction(const Point& a, const Point& b) {
+  return static_cast<std::int8_t>((b.x > a.x) - (b.x < a.x));
+}
+
 /// What SimplicityCheck::find_t_junctions found.
 struct TJunctionSearch {
   /// Every T-junction, by edge, then from the edge's start to its end; one vertex (the smallest
@@ -226,6 +236,9 @@ class SimplicityCheck {
   std::optional<Verdict> check_chains(const CleanPolygon& polygon, const RunContext& ctx);
   bool monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges);
   bool chains_within(std::size_t budget) const;
+  /// Where the ring of edges [first, end) first turns in x (direction_), or first: its runs
+  /// start there, so that none wraps around the ring's first point.
+  std::uint32_t first_turn(std::uint32_t first, std::uint32_t end) const;
   struct Chain;
   void finish_run(Chain& chain);
   template <class Visit>
