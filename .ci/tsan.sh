@@ -14,7 +14,7 @@ build="${1:-$root/build-tsan}"
 export CXX="${CXX:-g++}"
 
 if [[ ! -f "$build/build.ninja" ]]; then
-  meson setup "$build" "$root" \
+  meson setup "$build" "$root" --unity on \
     -Db_sanitize=thread -Db_lundef=false -Doptimization=2 -Ddebug=false -Dcpp_args=-g1 \
     -Dbench=disabled -Dcli=disabled -Dtests=enabled -Dfuzz=disabled
 fi

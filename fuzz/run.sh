@@ -19,8 +19,9 @@ build=${FUZZ_BUILD:-build-fuzz}
 mkdir -p "$build"
 if ! log=$(flock "$build/.fuzz-build.lock" bash -c '
     [[ -f $1/build.ninja ]] ||
-      CC=clang CXX=clang++ meson setup "$1" -Dfuzz=enabled -Dtests=disabled -Dbench=disabled \
-        -Dcli=disabled -Dpython=disabled -Db_sanitize=address,undefined -Db_lundef=false
+      CC=clang CXX=clang++ meson setup "$1" --unity on -Dfuzz=enabled -Dtests=disabled \
+        -Dbench=disabled -Dcli=disabled -Dpython=disabled -Db_sanitize=address,undefined \
+        -Db_lundef=false
     ninja -C "$1" -j"$2" "fuzz/fuzz_$3"' _ "$build" "${JOBS:-2}" "$target" 2>&1); then
   printf '%s\n' "$log" >&2
   exit 1
