@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <span>
 
 #include "geometry/segments.hpp"
 #include "geometry/sort.hpp"
@@ -151,7 +152,7 @@ bool folds_anywhere(const Point* p, std::size_t n) {
 
 /// Whether any corner of the ring from `first` on folds back (a tip), and its lowest-leftmost
 /// point (`lowest`, relative to `first`).
-bool has_tip(const std::vector<Point>& pts, std::size_t first, std::size_t& lowest) {
+bool has_tip(std::span<const Point> pts, std::size_t first, std::size_t& lowest) {
   const std::size_t n = pts.size() - first;
   lowest = 0;
   if (n < 3) return false;

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/fill_vector.hpp"
 #include "geometry/segments.hpp"
 #include "pear/geometry.hpp"
 #include "pear/predicates.hpp"
@@ -14,11 +15,18 @@
 namespace pear::detail {
 
 struct Boundary {
-  std::vector<Point> pos;             ///< position of each node (copied for locality)
-  std::vector<std::uint32_t> vertex;  ///< the caller's index of the node's vertex
-  std::vector<std::uint32_t> prev, next;
+  // Filled in parts on large polygons: resize() leaves them to the tasks (fill_vector.hpp).
+  FillVector<Point> pos;             ///< position of each node (copied for locality)
+  FillVector<std::uint32_t> vertex;  ///< the caller's index of the node's vertex
+  FillVector<std::uint32_t> prev, next;
 
   std::uint32_t size() const { return static_cast<std::uint32_t>(pos.size()); }
+  void reserve(std::size_t nodes) {
+    pos.reserve(nodes);
+    vertex.reserve(nodes);
+    prev.reserve(nodes);
+    next.reserve(nodes);
+  }
   void clear() {
     pos.clear();
     vertex.clear();

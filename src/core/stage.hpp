@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "core/fill_vector.hpp"
 #include "core/tasks.hpp"
 #include "pear/geometry.hpp"
 #include "pear/pear.hpp"
@@ -42,8 +43,8 @@ using TriangleList = std::vector<std::array<std::uint32_t, 3>>;
 /// The polygon after cleaning: repeated consecutive points and closing points dropped, outer ring
 /// counterclockwise, holes clockwise, degenerate holes removed.
 struct CleanPolygon {
-  std::vector<Point> points;               ///< kept vertices, ring after ring
-  std::vector<std::uint32_t> original;     ///< the caller's index of each kept vertex
+  FillVector<Point> points;                ///< kept vertices, ring after ring
+  FillVector<std::uint32_t> original;      ///< the caller's index of each kept vertex
   std::vector<std::uint32_t> ring_starts;  ///< kept ring r is [ring_starts[r], ring_starts[r+1])
   std::vector<std::uint32_t> ring_source;  ///< the caller's ring number of each kept ring
   std::size_t ring_count() const { return ring_starts.empty() ? 0 : ring_starts.size() - 1; }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/fill_vector.hpp"
 #include "core/stage.hpp"
 #include "geometry/uniform_grid.hpp"
 
@@ -74,8 +75,8 @@ class HoleBridger {
   /// The grid's contents: the nodes and edges of every ring (ids: the ring's node numbers,
   /// edge v running from v), then per-cell lists of what bridges add.
   struct CellLists {
-    std::vector<std::uint32_t> start, items;  ///< cell c holds items[start[c], start[c + 1])
-    std::vector<std::uint32_t> head;          ///< added later: a list through `added`
+    FillVector<std::uint32_t> start, items;  ///< cell c holds items[start[c], start[c + 1])
+    FillVector<std::uint32_t> head;          ///< added later: a list through `added`
     std::vector<std::pair<std::uint32_t, std::uint32_t>> added;  ///< {item, next in list}
     template <class Visit>
     void for_each(std::size_t cell, Visit&& visit) const {
@@ -97,8 +98,12 @@ class HoleBridger {
   };
   /// The parallel grid build's scratch, per chunk of item ids: its (cell, item) pairs and how
   /// many fall in each band of cells (then where the band's pairs of this chunk go).
+  /// {cell, item}, trivial (std::pair's constructor zeroes): resize() leaves it unwritten.
+  struct CellPair {
+    std::uint32_t first, second;
+  };
   struct GridChunk {
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+    std::vector<CellPair> pairs;
     std::vector<std::uint32_t> in_band;
   };
 
@@ -131,14 +136,14 @@ class HoleBridger {
   /// Node or edge id -> the rank of its ring (a ring joins when the hole ranked next is
   /// searched), 0 for what bridges add, never (UINT32_MAX) for a hole that could not be joined.
   std::vector<std::uint32_t> rank_;
-  std::vector<std::uint32_t> edge_start_;  ///< edge id -> start node (its end is next[start])
-  std::vector<std::uint32_t> out_edge_;    ///< node -> id of the edge leaving it
-  std::vector<Hole> holes_;                ///< by leftmost vertex: hole k - 1 has rank k
-  std::vector<Attachment> found_;          ///< the parallel search's result per hole
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs_;  ///< {cell, item}: build_grid
-  std::vector<GridChunk> grid_chunks_;  ///< in parts: the nodes' chunks, then the edges'
+  FillVector<std::uint32_t> edge_start_;  ///< edge id -> start node (its end is next[start])
+  FillVector<std::uint32_t> out_edge_;    ///< node -> id of the edge leaving it
+  std::vector<Hole> holes_;               ///< by leftmost vertex: hole k - 1 has rank k
+  std::vector<Attachment> found_;         ///< the parallel search's result per hole
+  std::vector<CellPair> pairs_;           ///< {cell, item}: build_grid
+  std::vector<GridChunk> grid_chunks_;    ///< in parts: the nodes' chunks, then the edges'
   /// In parts, per list (nodes, edges): its pairs by band, and where each band starts.
-  std::vector<std::pair<std::uint32_t, std::uint32_t>> by_band_[2];
+  FillVector<CellPair> by_band_[2];
   std::vector<std::uint32_t> band_start_[2];
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   std::size_t redone_ = 0;

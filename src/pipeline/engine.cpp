@@ -190,6 +190,10 @@ std::optional<std::uint32_t> Engine::split_t_junctions(const RunContext& ctx,
 
 std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx, bool in_parts) {
   const std::size_t n = clean_.points.size();
+  // Room for the two nodes each bridge adds and for what splits add later: splicing never
+  // moves the arrays (on Eurasia's first call that was 42 MB copied and faulted in on one
+  // thread), and pages never written cost nothing.
+  boundary_.reserve(2 * (n + clean_.ring_count()));
   // One node per clean vertex, each ring a cycle: copied and linked in whole arrays (a county
   // is a few dozen nodes, and this is a tenth of its run if done node by node).
   if (in_parts) {

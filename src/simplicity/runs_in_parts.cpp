@@ -41,7 +41,7 @@ void for_edges(const CleanPolygon& polygon, std::uint32_t first, std::uint32_t e
 /// `at_position(p, e, starts)` with the edge e at position p and whether a run starts there.
 template <class AtPosition>
 void walk_run_positions(const CleanPolygon& polygon, const std::vector<std::uint32_t>& run_start,
-                        const std::vector<std::int8_t>& direction, std::uint32_t first,
+                        const FillVector<std::int8_t>& direction, std::uint32_t first,
                         std::uint32_t end, AtPosition&& at_position) {
   if (first >= end) return;
   std::size_t r = ring_of(polygon, first);

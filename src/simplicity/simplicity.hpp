@@ -19,6 +19,7 @@
 #include <span>
 #include <vector>
 
+#include "core/fill_vector.hpp"
 #include "core/stage.hpp"
 #include "geometry/box_scan.hpp"
 #include "geometry/uniform_grid.hpp"
@@ -53,9 +54,10 @@ struct TJunctionSearch {
 
 /// The rings' edges: edge e runs from vertex e to next[e].
 struct RingEdges {
-  const std::vector<Point>* points = nullptr;
-  std::vector<std::uint32_t> next;
-  std::vector<EdgeBox> boxes;
+  const FillVector<Point>* points = nullptr;
+  // Each written in full after every resize, in tasks on large polygons (fill_vector.hpp).
+  FillVector<std::uint32_t> next;
+  FillVector<EdgeBox> boxes;
   EdgeBox bounds{};  ///< of all edges
 
   std::uint32_t size() const { return static_cast<std::uint32_t>(next.size()); }
@@ -259,13 +261,14 @@ class SimplicityCheck {
   static bool chain_before(const Chain& a, const Chain& b) {
     return a.x0 < b.x0 || (a.x0 == b.x0 && a.begin < b.begin);
   }
-  std::vector<Chain> chains_;
+  // The runs' FillVectors are written in full after every resize (in tasks on large polygons).
+  FillVector<Chain> chains_;
   std::vector<std::uint32_t> run_start_;  ///< each ring's first run's first edge (in parts)
   std::optional<std::size_t> reversals_;  ///< x_reversals_counted()
-  std::vector<std::uint32_t> chain_order_;
-  std::vector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
-  std::vector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
-  std::vector<Point> sorted_points_;    ///< repeats_a_position's copy
+  FillVector<std::uint32_t> chain_order_;
+  FillVector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
+  FillVector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
+  std::vector<Point> sorted_points_;   ///< repeats_a_position's copy
 
   /// check_all_pairs' edge boxes, a column per side (padded for four-wide loads), and the
   /// pairs to test as rows (geometry/box_scan.hpp).

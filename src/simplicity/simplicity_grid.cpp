@@ -23,7 +23,7 @@ CellRange cells_of(const GridFrame& frame, const EdgeBox& box) {
 /// Counting sort of the edges into the cells their boxes cover; within a cell they stay in the
 /// order given. False (buckets unusable) when that would make more than max_entries entries.
 template <class ForEachEdge>
-bool bucket_edges(const GridFrame& frame, const std::vector<EdgeBox>& boxes,
+bool bucket_edges(const GridFrame& frame, std::span<const EdgeBox> boxes,
                   ForEachEdge&& for_each_edge, std::size_t max_entries,
                   std::vector<std::uint32_t>& cell_start, std::vector<std::uint32_t>& items) {
   // Counts go two places up, so that filling with cell_start[c + 1]++ leaves the starts.

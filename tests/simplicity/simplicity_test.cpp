@@ -9,6 +9,7 @@
 #include <memory>
 #include <numeric>
 #include <random>
+#include <span>
 
 #include "clean/clean.hpp"
 #include "gtest_corpus.hpp"
@@ -119,7 +120,7 @@ class Reference {
   }
 
  private:
-  const std::vector<Point>& pts_;
+  std::span<const Point> pts_;
   std::vector<std::uint32_t> next_;
 };
 
