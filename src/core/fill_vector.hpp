@@ -8,7 +8,6 @@
 #include <memory>
 #include <new>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 #include "pear/config.hpp"
@@ -26,13 +25,10 @@ struct NoZeroAllocator : std::allocator<T> {
   NoZeroAllocator(const NoZeroAllocator<U>&) noexcept {}
 
   /// Default-initialises: nothing for a trivial type, the default constructor otherwise.
+  /// (Construction from values is std::allocator_traits' own, std::construct_at.)
   template <class U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
     ::new (static_cast<void*>(p)) U;
-  }
-  template <class U, class... Args>
-  void construct(U* p, Args&&... args) {
-    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 };
 
