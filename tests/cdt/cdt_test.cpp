@@ -7,6 +7,7 @@
 
 #include "pear/config.hpp"
 #include "pear/generate.hpp"
+#include "sizes.hpp"
 #include "support.hpp"
 
 namespace pear::testing {
@@ -237,7 +238,7 @@ TEST_P(Families, CdtForEveryAlgorithm) {
 }
 
 TEST_P(Families, SameTrianglesOnOneTwoAndFourThreads) {
-  const Polygon polygon = generate_polygon(GetParam(), 20000, 5);
+  const Polygon polygon = generate_polygon(GetParam(), family_size(20000), 5);
   for (Algorithm algorithm : all_algorithms)
     for (unsigned partitions : {2u, 4u, 7u}) {
       SCOPED_TRACE(std::string(algorithm_name(algorithm)) + " partitions " +

@@ -7,6 +7,7 @@
 
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
+#include "sizes.hpp"
 
 namespace pear {
 namespace {
@@ -70,7 +71,7 @@ class Synthetic : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(Synthetic, EveryVariantIsValidAndDeterministic) {
   for (std::size_t n : {700, 5000, 40000})
-    check_variants(generate_polygon(GetParam(), n, 11), true);
+    check_variants(generate_polygon(GetParam(), testing::family_size(n), 11), true);
 }
 
 std::vector<std::string> kinds() {
