@@ -312,9 +312,11 @@ Verdict verdict_of(std::uint32_t smallest, bool touching) {
 }  // namespace
 
 /// Every pair of edges that are not neighbours, by branch-free box tests of rows (an edge
-/// against the edges after it), then the exact tests for the few rows where boxes meet.
+/// against the edges after it), then the exact tests for the few rows where boxes meet; up to
+/// pair_by_pair_limit edges pair by pair.
 Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  if (n <= pair_by_pair_limit) return check_pair_by_pair(polygon, find_crossings);
   // References, not a structured binding: clang 14 cannot capture bindings in a lambda.
   auto &x0 = columns_[0], &y0 = columns_[1], &x1 = columns_[2], &y1 = columns_[3];
   link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
@@ -352,6 +354,31 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
         for (std::uint32_t f = from; f < to; ++f)
           if (x0[f] <= box.x1 && box.x0 <= x1[f])
             visit_pair(edges_, r.row, f, find_crossings, smallest, touching);
+    }
+  }
+  return verdict_of(smallest, touching);
+}
+
+/// check_all_pairs on a few edges, without the rows' set-up (their ranges, the columns, the
+/// SIMD scan).
+Verdict SimplicityCheck::check_pair_by_pair(const CleanPolygon& polygon, bool find_crossings) {
+  const auto n = static_cast<std::uint32_t>(polygon.points.size());
+  edges_.boxes.resize(n);
+  link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
+    edges_.boxes[e] = edge_box(a, b);
+  });
+  std::uint32_t smallest = SmallestViolation::none;
+  bool touching = false;
+  const EdgeBox* boxes = edges_.boxes.data();
+  const std::uint32_t* next = edges_.next.data();
+  // Neighbours' boxes always meet (they share an end): left out before the boxes are looked at.
+  for (std::uint32_t e = 0; e + 1 < n; ++e) {
+    const EdgeBox s = boxes[e];
+    for (std::uint32_t f = e + 1; f < n; ++f) {
+      const EdgeBox& t = boxes[f];
+      if ((t.x0 <= s.x1) & (s.x0 <= t.x1) & (t.y0 <= s.y1) & (s.y0 <= t.y1) & (next[e] != f) &
+          (next[f] != e))
+        visit_pair(edges_, e, f, find_crossings, smallest, touching);
     }
   }
   return verdict_of(smallest, touching);
