@@ -16,6 +16,7 @@ const HEURISTICS = Object.freeze({ top: 0, fast: 8 });
 const OPTION_NAMES = new Set(['algorithm', 'heuristic', 'cdt', 'checkSimplicity']);
 const BATCH_FIELDS = 3; // BatchResults: triangle_offsets, diagnostic_offsets, status
 const REPORT_FIELDS = 8; // Report's uint32 fields before the area error
+const NO_ROOM = Object.freeze({ points: -1, offsets: -1, pointsAt: 0, offsetsAt: 0 });
 
 /** Thrown for arguments pear cannot take, and by triangulate() for input it cannot triangulate. */
 export class PearError extends Error {
@@ -176,6 +177,7 @@ class Pear {
   constructor(exports) {
     this.exports = exports;
     this.heap = new Heap(exports.memory);
+    this.room = NO_ROOM;
   }
 
   // Copies x and y of every vertex and the ring offsets (0, the holes' starts, the vertex
@@ -189,10 +191,12 @@ class Pear {
     const vertices = coords.length / dim;
     const holes = holeIndices == null ? 0 : holeIndices.length;
     if (holeIndices != null) checkArrayLike(holeIndices, 'holeIndices');
-    const room = this.exports.pear_polygon(vertices, holes + 2) >>> 2;
+    // The module's buffers only grow: room made once serves every polygon that fits, with no
+    // call (a tenth of a small polygon's call in node).
+    if (vertices > this.room.points || holes + 2 > this.room.offsets) this.makeRoom(vertices, holes + 2);
     const { u32, f64 } = this.heap.refresh();
-    const points = u32[room] >>> 3;
-    const offsets = u32[room + 1] >>> 2;
+    const points = this.room.pointsAt;
+    const offsets = this.room.offsetsAt;
     if (dim === 2) {
       f64.set(coords, points);
     } else {
@@ -211,6 +215,18 @@ class Pear {
     }
     u32[offsets + holes + 1] = vertices;
     return vertices;
+  }
+
+  // Room in the module for `points` points and `offsets` ring offsets (pear_polygon).
+  makeRoom(points, offsets) {
+    const room = this.exports.pear_polygon(points, offsets) >>> 2;
+    const u32 = this.heap.refresh().u32;
+    this.room = {
+      points: Math.max(points, this.room.points),
+      offsets: Math.max(offsets, this.room.offsets),
+      pointsAt: u32[room] >>> 3,
+      offsetsAt: u32[room + 1] >>> 2,
+    };
   }
 
   // Runs pear_triangulate on the polygon written by writePolygon and fills `result`.
@@ -311,6 +327,7 @@ class Pear {
     const vertices = coords.length / 2;
     this.heap.refresh();
     const points = this.exports.pear_points(vertices) >>> 3;
+    this.room = NO_ROOM; // the points may have moved: writePolygon asks again
     const offsets = this.exports.pear_batch_offsets(ringOffsets.length + polygonOffsets.length) >>> 2;
     const { u32, f64 } = this.heap.refresh();
     f64.set(coords, points);

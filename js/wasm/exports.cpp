@@ -99,19 +99,27 @@ void copy_diagnostics(std::span<const pear::Diagnostic> from, std::vector<std::u
 
 }  // namespace
 
+/// Makes `v` at least `count` long: it never shrinks, so that room made for a polygon stays
+/// where it is for every smaller one, and the loader asks again only when one is larger.
+template <class T>
+void grow_to(std::vector<T>& v, std::uint32_t count) {
+  if (v.size() < count) v.resize(count);
+}
+
 /// Room for `count` points (x, y interleaved doubles); returns its address.
 PEAR_WASM_EXPORT(pear_points)(std::uint32_t count)->double* {
   Session& s = session();
-  s.points.resize(count);
+  grow_to(s.points, count);
   return &s.points.data()->x;
 }
 
 /// Room for a polygon's `points` points (x, y interleaved doubles) and `offsets` ring offsets
-/// (uint32), in one call: one crossing from JavaScript a polygon, not two. Returns where.
+/// (uint32), in one call. Returns where; the room stays there until a call of pear_polygon or
+/// pear_points asks for more.
 PEAR_WASM_EXPORT(pear_polygon)(std::uint32_t points, std::uint32_t offsets)->const Room* {
   Session& s = session();
-  s.points.resize(points);
-  s.ring_offsets.resize(offsets);
+  grow_to(s.points, points);
+  grow_to(s.ring_offsets, offsets);
   s.room = {address(s.points.data()), address(s.ring_offsets.data())};
   return &s.room;
 }
