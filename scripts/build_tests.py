@@ -6,8 +6,8 @@ Usage: scripts/build_tests.py BUILD_DIR [--no-suite SUITE]... [-j JOBS] [-n]
 `meson test` first builds every test's program, also those of the suites it then leaves out
 (in CI's sanitizer and no-thread builds: the corpus and 'large' suites' sweep and CDT corpus
 programs, a minute of compiling under ASan for nothing). This asks meson which targets the
-remaining tests depend on and builds those, and the build's other default targets that no test
-names (the library, the CLI), with ninja.
+remaining tests depend on and builds those and what is installed (the library, the CLI), with
+ninja.
 """
 import argparse
 import json
@@ -39,13 +39,13 @@ def main() -> int:
     wanted, skipped = set(), set()
     for test in tests:
         (skipped if suites_of(test) & set(args.no_suite) else wanted).update(test["depends"])
-    # Targets of the left-out tests only are not built; every other default target is.
-    unwanted = skipped - wanted
-    files = []
-    for target_id, target in targets.items():
-        if target_id in unwanted or not (target["build_by_default"] or target_id in wanted):
-            continue
-        files += target["filename"]
+    # The remaining tests' targets and what is installed (the library, the CLI, which CI runs in
+    # other ways); ninja builds what they need (static libraries, generated headers).
+    installed = {t for t, target in targets.items()
+                 if target.get("installed", False) and target["build_by_default"]}
+    chosen = wanted | installed
+    unwanted = skipped - chosen
+    files = [f for t in sorted(chosen) for f in targets[t]["filename"]]
     names = sorted({subprocess.run(["realpath", "--relative-to", args.build, f], check=True,
                                    capture_output=True, text=True).stdout.strip()
                     for f in files})
