@@ -13,14 +13,27 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 headers=$(for dir in "$@"; do (cd "$dir" && find pear -name '*.hpp'); done | sort -u)
 [[ $(wc -w <<<"$headers") -gt 1 ]] || { echo "check_headers: no pear/*.hpp under $*" >&2; exit 1; }
+alone() {  # alone CXX HEADER: the header as the only include of a source
+  local source
+  source=$(mktemp "$work/alone.XXXXXX.cpp")
+  printf '#include <%s>\n' "$2" >"$source"
+  "$1" "${flags[@]}" -fsyntax-only "$source" ||
+    { echo "check_headers: $2 alone fails under $1" >&2; return 1; }
+}
+# JOBS at a time (2 by default): one compiler after another took half a minute of CI.
 count=0
 for cxx in g++ clang++; do
+  running=()
   for header in $headers; do
-    printf '#include <%s>\n' "$header" >"$work/alone.cpp"
-    "$cxx" "${flags[@]}" -fsyntax-only "$work/alone.cpp" ||
-      { echo "check_headers: $header alone fails under $cxx" >&2; exit 1; }
+    alone "$cxx" "$header" &
+    running+=("$!")
     count=$((count + 1))
+    if [[ ${#running[@]} -ge ${JOBS:-2} ]]; then
+      wait "${running[0]}" || exit 1
+      running=("${running[@]:1}")
+    fi
   done
+  for pid in "${running[@]}"; do wait "$pid" || exit 1; done
   "$cxx" "${flags[@]}" -c -o "$work/templates.o" "$here/templates.cpp" ||
     { echo "check_headers: the templates fail under $cxx" >&2; exit 1; }
 done
