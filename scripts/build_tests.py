@@ -11,6 +11,7 @@ ninja.
 """
 import argparse
 import json
+import os
 import subprocess
 import sys
 
@@ -46,9 +47,7 @@ def main() -> int:
     chosen = wanted | installed
     unwanted = skipped - chosen
     files = [f for t in sorted(chosen) for f in targets[t]["filename"]]
-    names = sorted({subprocess.run(["realpath", "--relative-to", args.build, f], check=True,
-                                   capture_output=True, text=True).stdout.strip()
-                    for f in files})
+    names = sorted({os.path.relpath(f, os.path.realpath(args.build)) for f in files})
     left_out = sorted(targets[t]["name"] for t in unwanted)
     print(f"build_tests: {len(names)} targets, left out: {', '.join(left_out) or 'none'}",
           flush=True)

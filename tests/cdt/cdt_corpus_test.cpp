@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "gtest_corpus.hpp"
+#include "sizes.hpp"
 #include "support.hpp"
 
 namespace pear::testing {
@@ -18,7 +19,7 @@ struct Run {
 
 std::vector<Run> runs_for(std::size_t vertices) {
   std::vector<Run> runs;
-  if (vertices > 1'000'000) return {{1, 1}, {2, 8}};
+  if (vertices > huge_vertices) return {{1, 1}, {2, 8}};
   if (vertices > 50'000) return {{1, 1}, {2, 2}, {4, 4}, {2, 8}, {1, 3}};
   for (unsigned threads : {1u, 2u, 4u})
     for (unsigned partitions = 1; partitions <= 8; ++partitions)
@@ -27,8 +28,7 @@ std::vector<Run> runs_for(std::size_t vertices) {
 }
 
 void check_polygon(const Polygon& polygon, const corpus::File& file) {
-  std::size_t vertices = 0;
-  for (const Ring& ring : polygon) vertices += ring.size();
+  const std::size_t vertices = vertex_count(polygon);
   CdtCheck expect_cdt(polygon);
   for (Algorithm algorithm : all_algorithms)
     for (const Run run : runs_for(vertices)) {

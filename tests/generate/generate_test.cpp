@@ -10,6 +10,7 @@
 
 #include "pear/generate.hpp"
 #include "simple_polygon.hpp"
+#include "sizes.hpp"
 
 namespace {
 
@@ -17,12 +18,7 @@ using pear::Polygon;
 using pear::testing::ring_orientation;
 using pear::testing::simplicity_problem;
 using pear::testing::twice_signed_area;
-
-std::size_t vertex_count(const Polygon& polygon) {
-  std::size_t n = 0;
-  for (const auto& ring : polygon) n += ring.size();
-  return n;
-}
+using pear::testing::vertex_count;
 
 long double area(const Polygon& polygon) {
   long double sum = 0;

@@ -233,9 +233,7 @@ TEST_P(DivideAndConquerCorpus, ValidAndDeterministic) {
       ++polygons;
       // Eurasia's 1.5M vertices at 2 and 8 partitions only (the coasts took 40 s of CI with
       // all five, 26 so); the other coasts and the sweep's thread counts cover the rest.
-      std::size_t vertices = 0;
-      for (const Ring& ring : polygon) vertices += ring.size();
-      const bool huge = vertices > 1'000'000;
+      const bool huge = testing::vertex_count(polygon) > testing::huge_vertices;
       fallbacks += huge ? expect_valid(polygon, {2, 8}, file.valid)
                         : expect_valid(polygon, {1, 2, 3, 4, 8}, file.valid);
       split_runs += huge ? 2 : 4;

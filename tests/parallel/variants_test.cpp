@@ -29,12 +29,11 @@ const char* name_of(Algorithm algorithm) {
 /// inputs (coastlines) get the two settings that matter most, past a million vertices (Eurasia)
 /// the one with the most parts.
 void check_variants(const Polygon& polygon, bool expect_valid, bool large = false) {
-  std::size_t vertices = 0;
-  for (const Ring& ring : polygon) vertices += ring.size();
   const std::vector<Setting> chosen =
-      !large                 ? std::vector<Setting>(std::begin(settings), std::end(settings))
-      : vertices > 1'000'000 ? std::vector<Setting>{{8, 8}}
-                             : std::vector<Setting>{{2, 2}, {8, 8}};
+      !large ? std::vector<Setting>(std::begin(settings), std::end(settings))
+      : testing::vertex_count(polygon) > testing::huge_vertices
+          ? std::vector<Setting>{{8, 8}}
+          : std::vector<Setting>{{2, 2}, {8, 8}};
   for (Algorithm algorithm : variants) {
     for (EarHeuristic heuristic : {EarHeuristic::top, EarHeuristic::fast}) {
       if (large && heuristic == EarHeuristic::fast) continue;
