@@ -1,6 +1,7 @@
 #include "mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <utility>
 
@@ -27,16 +28,20 @@ struct EdgeKeys {
   std::size_t half_edges = 0;
 };
 
+/// The most chunks and buckets build_mesh cuts the edges into (each chunk counts its edges per
+/// bucket on the stack).
+constexpr std::size_t max_mesh_parts = 256;
+
 /// Edges are cut into `parts` chunks (each a range of triangles and one of ring vertices) and
 /// put into `parts` buckets by their low vertex (a range of vertices each), so that equal edges
 /// meet in one bucket and the buckets are matched in parallel.
 struct EdgeBuckets {
   std::size_t parts = 1;
-  std::size_t width = 1;            ///< vertices per bucket: bucket(v) = v / width
+  std::uint32_t shift = 0;          ///< bucket(v) = v >> shift (a division is slow)
+  std::size_t width = 1;            ///< vertices per bucket: 1 << shift
   std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
   std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
   std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
-  std::unique_ptr<std::uint8_t[]> bucket;  ///< each edge's, found once (a division is slow)
   std::vector<std::uint8_t> bad_end;       ///< per chunk: an edge ends past the points
 };
 
@@ -58,13 +63,22 @@ void for_chunk_edges(const EdgeKeys& keys, std::size_t ring_edges, std::size_t p
 /// Writes chunk c's keys and counts its edges per bucket.
 void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, std::size_t vertices,
                    EdgeKeys& keys, EdgeBuckets& buckets, std::size_t c) {
-  const auto put = [&](std::size_t e, std::uint32_t u, std::uint32_t v) {
-    keys.low[e] = std::min(u, v);
-    keys.high[e] = std::max(u, v);
+  // Four rows of counters, one per edge of a triangle and one for the ring edges: consecutive
+  // edges mostly fall in one bucket, and one counter would make each increment wait for the last.
+  std::array<std::array<std::uint32_t, max_mesh_parts>, 4> counts{};
+  std::uint32_t highest = 0;
+  const std::uint32_t shift = buckets.shift;
+  const auto put = [&](std::size_t e, std::uint32_t u, std::uint32_t v, std::size_t row) {
+    const std::uint32_t low = std::min(u, v), high = std::max(u, v);
+    keys.low[e] = low;
+    keys.high[e] = high;
+    highest = std::max(highest, high);
+    ++counts[row][(low >> shift) & (max_mesh_parts - 1)];
   };
   const auto [t0, t1] = chunk_of(triangles.size(), buckets.parts, c);
   for (std::size_t t = t0; t < t1; ++t)
-    for (std::size_t k = 0; k < 3; ++k) put(3 * t + k, triangles[t][k], triangles[t][(k + 1) % 3]);
+    for (std::size_t k = 0; k < 3; ++k)
+      put(3 * t + k, triangles[t][k], triangles[t][(k + 1) % 3], k);
   const auto [v0, v1] = chunk_of(polygon.points.size(), buckets.parts, c);
   // The ring of v0, then walked along: ring r is [ring_starts[r], ring_starts[r + 1]).
   std::size_t r = static_cast<std::size_t>(
@@ -73,17 +87,13 @@ void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, s
   for (std::size_t v = v0; v < v1; ++v) {
     while (v >= polygon.ring_starts[r + 1]) ++r;
     const std::uint32_t next = v + 1 < polygon.ring_starts[r + 1] ? v + 1 : polygon.ring_starts[r];
-    put(keys.half_edges + v, polygon.original[v], polygon.original[next]);
+    put(keys.half_edges + v, polygon.original[v], polygon.original[next], 3);
   }
+  // An end past the points makes the buckets meaningless: build_mesh stops before using them.
+  if (t0 < t1 || v0 < v1) buckets.bad_end[c] = highest >= vertices;
   std::size_t* count = &buckets.counts[c * buckets.parts];
-  const auto width = static_cast<std::uint32_t>(buckets.width);
-  for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
-    if (keys.high[e] >= vertices) return void(buckets.bad_end[c] = 1);
-    if (buckets.parts == 1) return;  // one bucket: match_all sorts the keys themselves
-    const auto b = static_cast<std::uint8_t>(keys.low[e] / width);
-    buckets.bucket[e] = b;
-    ++count[b];
-  });
+  for (std::size_t b = 0; b < buckets.parts; ++b)
+    count[b] = counts[0][b] + counts[1][b] + counts[2][b] + counts[3][b];
 }
 
 /// Where each chunk writes in each bucket: buckets one after another, chunks in order inside.
@@ -116,51 +126,27 @@ struct BucketMatch {
   bool triangulation = true;         ///< false: an edge with more than two triangles
 };
 
-/// Pairs equal edges of `order` (sorted by low, then high). A ring edge makes its triangle's
-/// edge a constraint.
-BucketMatch match_sorted(Mesh& mesh, const EdgeKeys& keys, std::span<const std::uint32_t> order) {
-  BucketMatch m;
-  for (std::size_t i = 0; i < order.size();) {
-    std::size_t j = i, rings = 0;
-    for (; j < order.size() && keys.low[order[j]] == keys.low[order[i]] &&
-           keys.high[order[j]] == keys.high[order[i]];
-         ++j)
-      rings += order[j] >= keys.half_edges ? 1 : 0;
-    const std::size_t uses = j - i - rings;
-    if (uses > 2 || (uses == 2 && rings == 0 && !pair(mesh, order[i], order[i + 1], m.pairs))) {
-      m.triangulation = false;
-      return m;
-    }
-    if (uses + rings == 1) m.loose.push_back(order[i]);
-    i = j;
-  }
-  return m;
-}
+/// Every edge, 0 to count - 1, as a range (the one part's bucket).
+struct AllEdges {
+  std::size_t count;
+  struct Iterator {
+    std::uint32_t e;
+    std::uint32_t operator*() const { return e; }
+    Iterator& operator++() { return ++e, *this; }
+    bool operator!=(const Iterator& other) const { return e != other.e; }
+  };
+  std::size_t size() const { return count; }
+  Iterator begin() const { return {0}; }
+  Iterator end() const { return {static_cast<std::uint32_t>(count)}; }
+};
 
-/// Stable counting sort of `in` by key[e] < range into `out`.
-void counting_sort(const std::vector<std::uint32_t>& in, const std::uint32_t* key,
-                   std::size_t range, std::vector<std::uint32_t>& out) {
-  std::vector<std::uint32_t> start(range + 1, 0);
-  for (std::uint32_t e : in) ++start[key[e] + 1];
-  for (std::size_t v = 0; v < range; ++v) start[v + 1] += start[v];
-  out.resize(in.size());
-  for (std::uint32_t e : in) out[start[key[e]]++] = e;
-}
-
-/// One part: two stable counting sorts of all edges (by high, then by low) put equal edges next
-/// to each other, in less work than the buckets' sorts, which pay off only in parallel.
-BucketMatch match_all(Mesh& mesh, const EdgeKeys& keys, std::size_t edges, std::size_t vertices) {
-  std::vector<std::uint32_t> order(edges), by_high;
-  for (std::size_t e = 0; e < edges; ++e) order[e] = static_cast<std::uint32_t>(e);
-  counting_sort(order, keys.high.get(), vertices, by_high);
-  counting_sort(by_high, keys.low.get(), vertices, order);
-  return match_sorted(mesh, keys, order);
-}
-
-/// One bucket of many: its edges counted by low over the bucket's vertices, each low's few
-/// edges sorted by high by insertion, as high << 32 | edge (integers compared, no key looked
-/// up), then matched. The order does not depend on the chunks.
-BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, std::span<const std::uint32_t> edges,
+/// One bucket (or, in one part, every edge): its edges counted by low over the bucket's
+/// vertices, each low's few edges sorted by high by insertion, as high << 32 | edge (integers
+/// compared, no key looked up), then equal edges paired from those values alone. A ring edge
+/// makes its triangle's edge a constraint. The order, and so every twin, depends on neither the
+/// chunks nor the parts: within an edge, the lowest number first.
+template <class Edges>
+BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const Edges& edges,
                          std::uint32_t first_vertex, std::size_t width) {
   std::vector<std::uint32_t> start(width + 1, 0);
   std::vector<std::uint64_t> sorted(edges.size());
@@ -168,18 +154,33 @@ BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, std::span<const std::
   for (std::size_t v = 0; v < width; ++v) start[v + 1] += start[v];
   for (const std::uint32_t e : edges)
     sorted[start[keys.low[e] - first_vertex]++] = std::uint64_t{keys.high[e]} << 32 | e;
+  BucketMatch m;
   for (std::size_t v = 0, from = 0; v < width; from = start[v++]) {
-    const auto first = sorted.begin() + from, last = sorted.begin() + start[v];
+    const auto first = sorted.begin() + static_cast<std::ptrdiff_t>(from);
+    const auto last = sorted.begin() + start[v];
     if (last - first > 16) {
       detail::sort(first, last);  // a vertex of high degree (a fan)
-      continue;
+    } else {
+      for (auto it = first; it != last; ++it)
+        for (auto at = it; at != first && *(at - 1) > *at; --at) std::iter_swap(at - 1, at);
     }
-    for (auto it = first; it != last; ++it)
-      for (auto at = it; at != first && *(at - 1) > *at; --at) std::iter_swap(at - 1, at);
+    for (auto i = first; i != last;) {
+      auto j = i;
+      std::size_t rings = 0;
+      for (; j != last && (*j >> 32) == (*i >> 32); ++j)
+        rings += static_cast<std::uint32_t>(*j) >= keys.half_edges ? 1 : 0;
+      const auto uses = static_cast<std::size_t>(j - i) - rings;
+      const auto edge = static_cast<std::uint32_t>(*i);
+      if (uses > 2 || (uses == 2 && rings == 0 &&
+                       !pair(mesh, edge, static_cast<std::uint32_t>(*(i + 1)), m.pairs))) {
+        m.triangulation = false;
+        return m;
+      }
+      if (uses + rings == 1) m.loose.push_back(edge);
+      i = j;
+    }
   }
-  std::vector<std::uint32_t> order(sorted.size());
-  for (std::size_t i = 0; i < sorted.size(); ++i) order[i] = static_cast<std::uint32_t>(sorted[i]);
-  return match_sorted(mesh, keys, order);
+  return m;
 }
 
 /// Where rings touch, two caller indices share a point, and the triangles on the two sides of a
@@ -216,10 +217,13 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   const std::size_t edges = 3 * triangles.size() + polygon.points.size();
   EdgeKeys keys;
   EdgeBuckets buckets;
-  // At most 256 parts: an edge's bucket is kept in a byte.
-  const std::size_t most_parts = std::clamp<std::size_t>(ctx.partitions, 1, 256);
+  const std::size_t most_parts = std::clamp<std::size_t>(ctx.partitions, 1, max_mesh_parts);
   buckets.parts = std::clamp<std::size_t>(edges / mesh_edges_per_task, 1, most_parts);
-  buckets.width = std::max<std::size_t>(1, (points.size() + buckets.parts - 1) / buckets.parts);
+  // A power of two at least the vertices over the parts: the buckets past the last vertex
+  // stay empty.
+  const std::size_t per_part = (points.size() + buckets.parts - 1) / buckets.parts;
+  while ((std::size_t{1} << buckets.shift) < per_part) ++buckets.shift;
+  buckets.width = std::size_t{1} << buckets.shift;
   ctx.run_serial("cdt adjacency: allocate", [&] {
     mesh.points = points;
     mesh.triangles = &triangles;
@@ -229,7 +233,6 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     keys.low = unfilled<std::uint32_t>(edges);
     keys.high = unfilled<std::uint32_t>(edges);
     buckets.counts.assign(buckets.parts * buckets.parts, 0);
-    if (buckets.parts > 1) buckets.bucket = unfilled<std::uint8_t>(edges);
     buckets.bad_end.assign(buckets.parts, 0);
   });
   ctx.run_tasks("cdt adjacency: edges", buckets.parts, [&](std::size_t c) {
@@ -239,14 +242,15 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     return false;
   std::vector<BucketMatch> matches(buckets.parts);
   if (buckets.parts == 1) {
-    ctx.run_serial("cdt adjacency: match",
-                   [&] { matches[0] = match_all(mesh, keys, edges, points.size()); });
+    ctx.run_serial("cdt adjacency: match", [&] {
+      matches[0] = match_bucket(mesh, keys, AllEdges{edges}, 0, points.size());
+    });
   } else {
     ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets); });
     ctx.run_tasks("cdt adjacency: scatter", buckets.parts, [&](std::size_t c) {
       std::size_t* at = &buckets.counts[c * buckets.parts];
       for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
-        buckets.edges[at[buckets.bucket[e]]++] = static_cast<std::uint32_t>(e);
+        buckets.edges[at[keys.low[e] >> buckets.shift]++] = static_cast<std::uint32_t>(e);
       });
     });
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
