@@ -2,7 +2,7 @@
 
 namespace pear::detail {
 
-void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+void find_pinches(const Boundary& b, std::span<const std::uint8_t> alive, std::size_t live,
                   std::vector<std::uint8_t>& pinch, std::vector<std::uint32_t>& table) {
   pinch.assign(b.size(), 0);
   std::size_t capacity = 16;
@@ -25,7 +25,7 @@ void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std
   }
 }
 
-void fill_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+void fill_pinches(const Boundary& b, std::span<const std::uint8_t> alive, std::size_t live,
                   SharedPositions shared, std::vector<std::uint8_t>& pinch,
                   std::vector<std::uint32_t>& table) {
   if (shared.marks != nullptr && shared.marks->size() == b.size())

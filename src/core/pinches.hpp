@@ -6,6 +6,7 @@
 
 #include <bit>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "boundary.hpp"
@@ -34,12 +35,12 @@ struct SharedPositions {
 
 /// Sets pinch[u] for every live node u (alive[u] != 0) whose position another live node has;
 /// `live` is the number of live nodes, `table` scratch memory. Exact (hash on the coordinates).
-void find_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+void find_pinches(const Boundary& b, std::span<const std::uint8_t> alive, std::size_t live,
                   std::vector<std::uint8_t>& pinch, std::vector<std::uint32_t>& table);
 
 /// pinch as find_pinches sets it, taken from `shared` where the pipeline already knows the
 /// repeated positions (its marks for every node of b, or none at all): no hashing then.
-void fill_pinches(const Boundary& b, const std::vector<std::uint8_t>& alive, std::size_t live,
+void fill_pinches(const Boundary& b, std::span<const std::uint8_t> alive, std::size_t live,
                   SharedPositions shared, std::vector<std::uint8_t>& pinch,
                   std::vector<std::uint32_t>& table);
 

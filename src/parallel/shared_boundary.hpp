@@ -23,15 +23,18 @@ struct SharedBoundary {
   Boundary* b = nullptr;
   std::vector<ReflexGrid> start_grids;   ///< per chain: its hashed nodes at the phase start
   std::vector<std::uint32_t> landmarks;  ///< the hashed landmarks
-  std::vector<std::uint8_t> alive;       ///< still on the boundary
-  std::vector<std::uint8_t> pinch;       ///< shares its position: always hashed
-  std::vector<std::uint8_t> hashed;      ///< strictly reflex or pinch now (owner writes)
-  std::vector<std::uint32_t> owner;      ///< chain of each node, or `landmark`
-  std::vector<std::uint32_t> stamp;      ///< bumped when a node's ear status may have changed
-  std::vector<std::uint32_t> order;      ///< live nodes in cycle order (refreshed per round)
+  // Filled in tasks (start): resize() leaves them unwritten (fill_vector.hpp).
+  FillVector<std::uint8_t> alive;   ///< still on the boundary
+  std::vector<std::uint8_t> pinch;  ///< shares its position: always hashed
+  FillVector<std::uint8_t> hashed;  ///< strictly reflex or pinch now (owner writes)
+  FillVector<std::uint32_t> owner;  ///< chain of each node, or `landmark`
+  FillVector<std::uint32_t> stamp;  ///< bumped when a node's ear status may have changed
+  FillVector<std::uint32_t> order;  ///< live nodes in cycle order (refreshed per round)
 
   /// Walks the cycle through `entry`, marks it alive, finds pinches (unless `shared` knows
-  /// them) and hashed nodes. Returns the cycle's length.
+  /// them) and hashed nodes. Returns the cycle's length. In parts: the arrays' fill, the links
+  /// that jump (next[u] != u + 1), and `order` from the runs of consecutive nodes between them;
+  /// only the runs are followed on one thread (node by node where jumps are many).
   std::size_t start(Boundary& boundary, std::uint32_t entry, const RunContext& ctx,
                     SharedPositions shared = {});
   /// Refreshes `order` from a live node of the cycle; returns a live node or no node.
@@ -59,6 +62,12 @@ struct SharedBoundary {
     return any_foreign_near(a, b, c, chains, visit);
   }
   std::size_t chains = 0;
+
+ private:
+  /// Fills the arrays and `order` with the cycle through `entry`, alive set on it.
+  void walk_cycle(std::uint32_t entry, const RunContext& ctx);
+  /// `order` from entry along the links, alive set on the way (the arrays cleared before).
+  void walk_node_by_node(std::uint32_t entry);
 };
 
 /// Splits [0, count) into `parts` ranges of nearly equal size: part i is

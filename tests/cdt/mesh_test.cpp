@@ -14,7 +14,7 @@
 #include "clean/clean.hpp"
 #include "pear/config.hpp"
 #include "pear/generate.hpp"
-#include "pipeline/threading.hpp"
+#include "run_contexts.hpp"
 #include "support.hpp"
 
 namespace pear::detail {
@@ -68,29 +68,21 @@ TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
   Mesh reference;
   ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, reference, RunContext{}));
   expect_twins_right(reference, t.clean.points.size());
-  for (unsigned threads : {1u, 2u, 3u, 8u, 16u}) {
-    Workers workers;
-    for (std::uint32_t partitions : {1u, 2u, 3u, 8u, 16u, 4096u}) {
-      SCOPED_TRACE("threads " + std::to_string(threads) + " partitions " +
-                   std::to_string(partitions));
-      RunProfile profile;
-      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
-                           .partitions = partitions,
-                           .profile = &profile};
-      Mesh mesh;
-      ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, ctx));
-      EXPECT_EQ(mesh.twin, reference.twin);
-      EXPECT_EQ(mesh.interior_edges, reference.interior_edges);
-      // The matching phase really is cut into the partitions' tasks (4,096 partitions: as many
-      // as the edges fill, mesh_edges_per_task each).
-      const auto match =
-          std::find_if(profile.phases.begin(), profile.phases.end(),
-                       [](const auto& p) { return p.name == "cdt adjacency: match"; });
-      ASSERT_NE(match, profile.phases.end());
-      EXPECT_EQ(match->task_seconds.size(),
-                std::min<std::size_t>(partitions, edges / mesh_edges_per_task));
-    }
-  }
+  for_each_context({1u, 2u, 3u, 8u, 16u}, {1u, 2u, 3u, 8u, 16u, 4096u},
+                   [&](const RunContext& ctx, const RunProfile& profile) {
+                     Mesh mesh;
+                     ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, ctx));
+                     EXPECT_EQ(mesh.twin, reference.twin);
+                     EXPECT_EQ(mesh.interior_edges, reference.interior_edges);
+                     // The matching phase really is cut into the partitions' tasks (4,096
+                     // partitions: as many as the edges fill, mesh_edges_per_task each).
+                     const auto match = std::find_if(
+                         profile.phases.begin(), profile.phases.end(),
+                         [](const auto& p) { return p.name == "cdt adjacency: match"; });
+                     ASSERT_NE(match, profile.phases.end());
+                     EXPECT_EQ(match->task_seconds.size(),
+                               std::min<std::size_t>(ctx.partitions, edges / mesh_edges_per_task));
+                   });
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, MeshBuild, ::testing::Values("random", "random-holes", "star"));

@@ -17,7 +17,7 @@
 #include "earclip/touching.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
-#include "pipeline/threading.hpp"
+#include "run_contexts.hpp"
 
 namespace pear::detail {
 namespace {
@@ -80,43 +80,37 @@ std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = 
     }
   }
   std::size_t redone = 0;
-  for (unsigned threads : {1u, 2u, 3u, 8u}) {
-    Workers workers;
-    for (std::uint32_t partitions : {2u, 3u, 16u, 4096u}) {
-      SCOPED_TRACE("threads " + std::to_string(threads) + " partitions " +
-                   std::to_string(partitions));
-      RunProfile profile;
-      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
-                           .partitions = partitions,
-                           .profile = &profile};
-      const Bridged parts = bridge(clean, ctx, true);
-      EXPECT_EQ(parts.unjoined, serial.unjoined);
-      EXPECT_EQ(parts.boundary.next, serial.boundary.next);
-      EXPECT_EQ(parts.boundary.prev, serial.boundary.prev);
-      EXPECT_EQ(parts.boundary.vertex, serial.boundary.vertex);
-      EXPECT_TRUE(parts.boundary.pos == serial.boundary.pos);
-      redone = std::max(redone, parts.redone);
-      // The points where the boundary passes more than once, untangled with the hashing in
-      // parts: the same links, the same verdict, the same shared positions.
-      Boundary one = serial.boundary, many = serial.boundary;
-      TouchingPoints serial_points, points_in_parts;
-      EXPECT_EQ(points_in_parts.untangle(many, ctx, partitions + 1), serial_points.untangle(one));
-      EXPECT_EQ(many.next, one.next);
-      EXPECT_EQ(many.prev, one.prev);
-      EXPECT_EQ(points_in_parts.shared_positions(), serial_points.shared_positions());
-      // The search really ran as tasks, as many as the parts ask (or the holes allow).
-      const auto find =
-          std::find_if(profile.phases.begin(), profile.phases.end(),
-                       [](const auto& p) { return p.name == "bridge: find attachments"; });
-      if (clean.ring_count() - 1 > HoleBridger::few_holes) {
-        EXPECT_NE(find, profile.phases.end());
-        if (find == profile.phases.end()) continue;
-        EXPECT_EQ(find->task_seconds.size(),
-                  HoleBridger::tasks_for(clean.ring_count() - 1, 4, partitions));
-        EXPECT_GT(find->task_seconds.size(), 1u);
-      }
-    }
-  }
+  for_each_context(
+      {1u, 2u, 3u, 8u}, {2u, 3u, 16u, 4096u},
+      [&](const RunContext& ctx, const RunProfile& profile) {
+        const std::uint32_t partitions = ctx.partitions;
+        const Bridged parts = bridge(clean, ctx, true);
+        EXPECT_EQ(parts.unjoined, serial.unjoined);
+        EXPECT_EQ(parts.boundary.next, serial.boundary.next);
+        EXPECT_EQ(parts.boundary.prev, serial.boundary.prev);
+        EXPECT_EQ(parts.boundary.vertex, serial.boundary.vertex);
+        EXPECT_TRUE(parts.boundary.pos == serial.boundary.pos);
+        redone = std::max(redone, parts.redone);
+        // The points where the boundary passes more than once, untangled with the hashing in
+        // parts: the same links, the same verdict, the same shared positions.
+        Boundary one = serial.boundary, many = serial.boundary;
+        TouchingPoints serial_points, points_in_parts;
+        EXPECT_EQ(points_in_parts.untangle(many, ctx, partitions + 1), serial_points.untangle(one));
+        EXPECT_EQ(many.next, one.next);
+        EXPECT_EQ(many.prev, one.prev);
+        EXPECT_EQ(points_in_parts.shared_positions(), serial_points.shared_positions());
+        // The search really ran as tasks, as many as the parts ask (or the holes allow).
+        const auto find =
+            std::find_if(profile.phases.begin(), profile.phases.end(),
+                         [](const auto& p) { return p.name == "bridge: find attachments"; });
+        if (clean.ring_count() - 1 > HoleBridger::few_holes) {
+          EXPECT_NE(find, profile.phases.end());
+          if (find == profile.phases.end()) return;
+          EXPECT_EQ(find->task_seconds.size(),
+                    HoleBridger::tasks_for(clean.ring_count() - 1, 4, partitions));
+          EXPECT_GT(find->task_seconds.size(), 1u);
+        }
+      });
   return redone;
 }
 

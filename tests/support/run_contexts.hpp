@@ -2,7 +2,12 @@
 // pear_internal_dep): whatever a stage computes must not depend on which.
 #pragma once
 
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <initializer_list>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/stage.hpp"
@@ -23,5 +28,24 @@ struct ThreadContexts {
     }
   }
 };
+
+/// Calls check(ctx, profile) for every thread count and partition count given, each pair in a
+/// SCOPED_TRACE that names it, with a fresh RunProfile that the context records the phases in.
+template <class Check>
+void for_each_context(std::initializer_list<unsigned> thread_counts,
+                      std::initializer_list<std::uint32_t> partition_counts, Check&& check) {
+  for (unsigned threads : thread_counts) {
+    Workers workers;
+    for (std::uint32_t partitions : partition_counts) {
+      SCOPED_TRACE("threads " + std::to_string(threads) + " partitions " +
+                   std::to_string(partitions));
+      RunProfile profile;
+      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                           .partitions = partitions,
+                           .profile = &profile};
+      check(ctx, profile);
+    }
+  }
+}
 
 }  // namespace pear::detail
