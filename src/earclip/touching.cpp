@@ -5,6 +5,7 @@
 #include <bit>
 #include <utility>
 
+#include "core/link_runs.hpp"
 #include "core/pinches.hpp"
 #include "geometry/sort.hpp"
 
@@ -191,7 +192,25 @@ bool TouchingPoints::untangle_point(Boundary& b, const std::uint32_t* nodes, std
 }
 
 std::vector<std::uint32_t> TouchingPoints::cycles(const Boundary& b, std::uint32_t first,
-                                                  const std::vector<std::uint32_t>& skip) {
+                                                  const std::vector<std::uint32_t>& skip,
+                                                  const RunContext& ctx, std::size_t tasks) {
+  std::vector<std::uint32_t> entries;
+#if PEAR_HAS_THREADS
+  std::vector<std::uint32_t> jumps;
+  if (tasks > 1 && find_link_jumps(b, ctx, "bridge: link jumps", tasks, jumps,
+                                   [](std::size_t, std::size_t) {})) {
+    bool found = false;
+    ctx.run_serial("bridge: cycles",
+                   [&] { found = cycles_by_runs(b, first, skip, jumps, entries); });
+    if (found) return entries;
+  }
+#endif
+  ctx.run_serial("bridge: cycles", [&] { entries = cycles_node_by_node(b, first, skip); });
+  return entries;
+}
+
+std::vector<std::uint32_t> TouchingPoints::cycles_node_by_node(
+    const Boundary& b, std::uint32_t first, const std::vector<std::uint32_t>& skip) {
   seen_.assign(b.size(), 0);
   const auto walk = [&](std::uint32_t start) {
     std::size_t length = 0;
@@ -210,5 +229,55 @@ std::vector<std::uint32_t> TouchingPoints::cycles(const Boundary& b, std::uint32
     if (!seen_[u] && walk(u) >= 3) entries.push_back(u);
   return entries;
 }
+
+#if PEAR_HAS_THREADS
+bool TouchingPoints::cycles_by_runs(const Boundary& b, std::uint32_t first,
+                                    const std::vector<std::uint32_t>& skip,
+                                    const std::vector<std::uint32_t>& jumps,
+                                    std::vector<std::uint32_t>& entries) {
+  // Every node lies on one cycle (untangling only relinks), so the runs tile the nodes, and a
+  // run's successor is the run its last link lands on.
+  const std::vector<std::uint32_t> heads = run_heads(b, jumps, 0);
+  std::vector<LinkRun> runs(heads.size());
+  std::vector<std::uint32_t> successor(heads.size());
+  const auto run_of = [&](std::uint32_t node) {
+    return static_cast<std::uint32_t>(std::upper_bound(heads.begin(), heads.end(), node) -
+                                      heads.begin() - 1);
+  };
+  for (std::size_t r = 0; r < heads.size(); ++r) {
+    if (!run_from(heads[r], jumps, heads, runs[r])) return false;
+    const std::uint32_t to = b.next[runs[r].first + runs[r].length - 1];
+    successor[r] = run_of(to);
+    if (heads[successor[r]] != to) return false;  // lands inside a run: not a cycle there
+  }
+  // Each cycle of runs once: its nodes, the lowest node first met in node order.
+  std::vector<std::uint8_t> seen(heads.size(), 0);
+  const auto walk = [&](std::uint32_t start) {
+    std::size_t length = 0, steps = 0;
+    std::uint32_t r = start;
+    do {
+      seen[r] = 1;
+      length += runs[r].length;
+      r = successor[r];
+    } while (r != start && ++steps <= heads.size());
+    return r == start ? length : 0;
+  };
+  for (std::uint32_t hole : skip)
+    if (!seen[run_of(hole)] && walk(run_of(hole)) == 0) return false;
+  entries.clear();
+  if (!seen[run_of(first)]) {
+    const std::size_t length = walk(run_of(first));
+    if (length == 0) return false;
+    if (length >= 3) entries.push_back(first);
+  }
+  for (std::uint32_t r = 0; r < heads.size(); ++r) {
+    if (seen[r]) continue;
+    const std::size_t length = walk(r);
+    if (length == 0) return false;
+    if (length >= 3) entries.push_back(heads[r]);
+  }
+  return true;
+}
+#endif
 
 }  // namespace pear::detail

@@ -28,10 +28,14 @@ class TouchingPoints {
   /// rings), what the clipper calls pinches; it need not hash the positions again.
   const std::vector<std::uint8_t>& shared_positions() const { return shared_; }
 
-  /// One node of every cycle of `b` with at least three nodes, the cycle through `first` first;
-  /// nodes marked in `skip` (the cycles of holes that could not be joined) are left out.
+  /// One node of every cycle of `b` with at least three nodes, the cycle through `first` first
+  /// (entered there), the others in the order of their lowest nodes (entered there); the
+  /// cycles through `skip` (holes that could not be joined) are left out. With `tasks` > 1
+  /// the links that jump are found in ctx's tasks and the cycles walked by runs of consecutive
+  /// nodes (link_runs.hpp): the same entries. Records its phases in ctx's profile.
   std::vector<std::uint32_t> cycles(const Boundary& b, std::uint32_t first,
-                                    const std::vector<std::uint32_t>& skip);
+                                    const std::vector<std::uint32_t>& skip,
+                                    const RunContext& ctx = RunContext{}, std::size_t tasks = 1);
 
  private:
   struct Spoke {
@@ -45,6 +49,12 @@ class TouchingPoints {
   void find_candidates(const Boundary& b, const RunContext& ctx, std::size_t tasks);
   /// Groups the candidates by position and relinks each point; see untangle().
   std::uint32_t untangle_points(Boundary& b);
+  std::vector<std::uint32_t> cycles_node_by_node(const Boundary& b, std::uint32_t first,
+                                                 const std::vector<std::uint32_t>& skip);
+  /// cycles() from the runs between `jumps`; false when the links are not all cycles.
+  bool cycles_by_runs(const Boundary& b, std::uint32_t first,
+                      const std::vector<std::uint32_t>& skip,
+                      const std::vector<std::uint32_t>& jumps, std::vector<std::uint32_t>& entries);
 
   std::vector<std::uint64_t> seen_once_, seen_twice_;  ///< per hash slot: nodes there
   std::vector<std::uint32_t> order_;  ///< nodes whose hash slot another node shares

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/link_runs.hpp"
 #include "core/pinches.hpp"
 #include "pear/config.hpp"
 #include "variants.hpp"
@@ -12,40 +13,22 @@ namespace pear::detail {
 #if PEAR_HAS_THREADS
 namespace {
 
-/// The fewest nodes worth a task of their own when the cycle is walked.
-constexpr std::size_t min_nodes_per_task = 16384;
-/// Runs of consecutive nodes pay off when they are this long on average; with more jumps (a
-/// boundary that clipping or splitting has rearranged) the cycle is walked node by node.
-constexpr std::size_t min_nodes_per_run = 64;
-
-/// A stretch of the cycle whose nodes are consecutive numbers: `length` nodes from `first`.
-struct Run {
-  std::uint32_t first, length;
-};
-
-/// The cycle through `entry` as runs of consecutive node numbers, in cycle order, found from
-/// `sources` (ascending: every node u with next[u] != u + 1) alone: a boundary made from rings
-/// is such runs but where bridges and ring ends jump. Empty when the runs would be too many to
-/// pay off or the links do not close into a cycle (the caller walks node by node then).
-std::vector<Run> cycle_runs(const Boundary& b, std::uint32_t entry,
-                            const std::vector<std::uint32_t>& sources) {
-  // Runs start at entry and wherever a jump lands; they end at a jump or before a start.
-  std::vector<std::uint32_t> heads{entry};
-  for (std::uint32_t u : sources) heads.push_back(b.next[u]);
-  std::sort(heads.begin(), heads.end());
-  heads.erase(std::unique(heads.begin(), heads.end()), heads.end());
-  std::vector<Run> runs;
+/// The cycle through `entry` as runs of consecutive node numbers, in cycle order, from the
+/// links that jump (`jumps`, ascending). Empty when the links do not close into a cycle (the
+/// caller walks node by node then).
+std::vector<LinkRun> cycle_runs(const Boundary& b, std::uint32_t entry,
+                                const std::vector<std::uint32_t>& jumps) {
+  const std::vector<std::uint32_t> heads = run_heads(b, jumps, entry);
+  std::vector<LinkRun> runs;
   std::size_t nodes = 0;
   std::uint32_t head = entry;
   do {
-    const auto source = std::lower_bound(sources.begin(), sources.end(), head);
-    const auto after = std::upper_bound(heads.begin(), heads.end(), head);
-    if (source == sources.end()) return {};  // no jump after head: not a closed cycle
-    const std::uint32_t last = after == heads.end() ? *source : std::min(*source, *after - 1);
-    runs.push_back({head, last - head + 1});
-    nodes += last - head + 1;
+    LinkRun run;
+    if (!run_from(head, jumps, heads, run)) return {};
+    runs.push_back(run);
+    nodes += run.length;
     if (nodes > b.size() || runs.size() > heads.size()) return {};
-    head = b.next[last];
+    head = b.next[run.first + run.length - 1];
   } while (head != entry);
   return runs;
 }
@@ -56,36 +39,29 @@ std::vector<Run> cycle_runs(const Boundary& b, std::uint32_t entry,
 #if PEAR_HAS_THREADS
 void SharedBoundary::walk_cycle(std::uint32_t entry, const RunContext& ctx) {
   const std::size_t size = b->size();
-  const std::size_t parts = std::clamp<std::size_t>(size / min_nodes_per_task, 1, ctx.partitions);
-  std::vector<std::vector<std::uint32_t>> sources(parts);
-  const std::size_t most_jumps = size / min_nodes_per_run + 1;
+  const std::size_t parts = link_tasks(size, ctx.partitions);
   ctx.run_serial("classify: allocate", [&] {
     alive.resize(size);
     hashed.resize(size);
     owner.resize(size);
     stamp.resize(size);
   });
-  // The arrays' fill and the jumps of the links, in parts; the cycle's order from them.
-  ctx.run_tasks("classify: jumps", parts, [&](std::size_t part) {
-    const std::size_t first = part_begin(size, parts, part),
-                      last = part_begin(size, parts, part + 1);
-    std::fill(alive.begin() + first, alive.begin() + last, 0);
-    std::fill(hashed.begin() + first, hashed.begin() + last, 0);
-    std::fill(owner.begin() + first, owner.begin() + last, landmark);
-    std::fill(stamp.begin() + first, stamp.begin() + last, 0);
-    // Past the whole cycle's share of jumps a part stops collecting: the walk goes node by node.
-    for (std::size_t u = first; u < last && sources[part].size() <= most_jumps; ++u)
-      if (b->next[u] != u + 1) sources[part].push_back(static_cast<std::uint32_t>(u));
-  });
-  std::vector<Run> runs;
+  // The arrays' fill and the links that jump, in parts; the cycle's order from them.
+  std::vector<std::uint32_t> jumps;
+  const bool few = find_link_jumps(
+      *b, ctx, "classify: jumps", parts, jumps, [&](std::size_t first, std::size_t last) {
+        std::fill(alive.begin() + first, alive.begin() + last, 0);
+        std::fill(hashed.begin() + first, hashed.begin() + last, 0);
+        std::fill(owner.begin() + first, owner.begin() + last, landmark);
+        std::fill(stamp.begin() + first, stamp.begin() + last, 0);
+      });
+  std::vector<LinkRun> runs;
   std::vector<std::size_t> run_at;  // where each run starts in `order`
   ctx.run_serial("classify: walk", [&] {
-    std::vector<std::uint32_t> all;
-    for (const auto& part : sources) all.insert(all.end(), part.begin(), part.end());
-    if (all.size() <= most_jumps) runs = cycle_runs(*b, entry, all);
+    if (few) runs = cycle_runs(*b, entry, jumps);
     if (runs.empty()) return walk_node_by_node(entry);  // many jumps
     std::size_t at = 0;
-    for (const Run& run : runs) run_at.push_back(std::exchange(at, at + run.length));
+    for (const LinkRun& run : runs) run_at.push_back(std::exchange(at, at + run.length));
     order.resize(at);
   });
   if (!runs.empty()) {

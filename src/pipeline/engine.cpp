@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cdt/delaunay.hpp"
+#include "core/link_runs.hpp"
 #include "geometry/sort.hpp"
 #include "parallel/variants.hpp"
 #include "pear/config.hpp"
@@ -246,7 +247,8 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
     const std::size_t tasks =
         in_parts ? HoleBridger::tasks_for(boundary_.size(), 4096, ctx.partitions) : 1;
     overlapping = touching_.untangle(boundary_, ctx, tasks);
-    ctx.run_serial("bridge: cycles", [&] { cycles_ = touching_.cycles(boundary_, 0, unjoined); });
+    cycles_ = touching_.cycles(boundary_, 0, unjoined, ctx,
+                               in_parts ? link_tasks(boundary_.size(), ctx.partitions) : 1);
     shared_ = {&touching_.shared_positions(), false};
   } else {
     cycles_.assign(1, 0);

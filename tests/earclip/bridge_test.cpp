@@ -9,10 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
+#include <random>
 #include <string>
 
 #include "boundary_support.hpp"
 #include "clean/clean.hpp"
+#include "core/link_runs.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/touching.hpp"
 #include "pear/generate.hpp"
@@ -224,6 +227,80 @@ TEST(BridgeInParts, GeneratedFamilies) {
       SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
       expect_same_in_parts(generate_polygon(kind, 1500, seed));
     }
+}
+
+/// One entry per cycle of at least three nodes, node by node: the cycle through `first`
+/// entered there, then the others entered at their lowest node; the cycles through `skip`
+/// left out.
+std::vector<std::uint32_t> cycles_walked(const Boundary& b, std::uint32_t first,
+                                         const std::vector<std::uint32_t>& skip) {
+  std::vector<std::uint8_t> seen(b.size(), 0);
+  const auto walk = [&](std::uint32_t start) {
+    std::size_t length = 0;
+    for (std::uint32_t v = start; !seen[v]; v = b.next[v]) seen[v] = 1, ++length;
+    return length;
+  };
+  for (std::uint32_t hole : skip) walk(hole);
+  std::vector<std::uint32_t> entries;
+  if (!seen[first] && walk(first) >= 3) entries.push_back(first);
+  for (std::uint32_t u = 0; u < b.size(); ++u)
+    if (!seen[u] && walk(u) >= 3) entries.push_back(u);
+  return entries;
+}
+
+/// Rings of `sizes` nodes, each linked into its own cycle in node order, then `splits`
+/// diagonals within the first ring (each cuts a cycle in two, copies at the end).
+Boundary rings(const std::vector<std::uint32_t>& sizes, std::uint32_t splits) {
+  Boundary b;
+  for (std::uint32_t size : sizes) {
+    const std::uint32_t first = b.size();
+    for (std::uint32_t i = 0; i < size; ++i) b.add({double(first + i), double(i % 7)}, b.size());
+    for (std::uint32_t i = 0; i < size; ++i) b.link(first + i, first + (i + 1) % size);
+  }
+  for (std::uint32_t k = 0; k < splits; ++k) b.add_diagonal(1000 * k + 10, 1000 * k + 500);
+  return b;
+}
+
+TEST(Cycles, TheSameEntriesInPartsAsNodeByNode) {
+  // Many rings (two of two nodes, left out), a ring cut into pieces, an unjoined hole skipped.
+  std::vector<std::uint32_t> sizes{60'000, 2, 25'000, 3, 2, 40'000};
+  for (int k = 0; k < 50; ++k) sizes.push_back(100 + 37 * k);
+  const Boundary b = rings(sizes, 30);
+  const std::vector<std::uint32_t> skip{60'002 + 7};  // in the ring of 25,000
+  for (std::uint32_t first : {0u, 777u, 60'000u, b.size() - 1}) {
+    SCOPED_TRACE("first " + std::to_string(first));
+    const std::vector<std::uint32_t> expected = cycles_walked(b, first, skip);
+    ASSERT_GT(expected.size(), 50u);
+    TouchingPoints serial;
+    EXPECT_EQ(serial.cycles(b, first, skip), expected);
+    for_each_context({1u, 2u}, {2u, 3u, 16u}, [&](const RunContext& ctx, const RunProfile&) {
+      TouchingPoints points;
+      EXPECT_EQ(points.cycles(b, first, skip, ctx, link_tasks(b.size(), ctx.partitions)), expected);
+    });
+  }
+}
+
+TEST(Cycles, ScrambledLinksAreWalkedNodeByNode) {
+  Boundary b = rings({70'000}, 0);
+  std::vector<std::uint32_t> order(b.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::shuffle(order.begin(), order.end(), std::mt19937(3));
+  // Two cycles: the first half of the shuffled order, and the second.
+  const std::size_t half = order.size() / 2;
+  for (std::size_t i = 0; i < half; ++i) b.link(order[i], order[(i + 1) % half]);
+  for (std::size_t i = half; i < order.size(); ++i)
+    b.link(order[i], order[i + 1 == order.size() ? half : i + 1]);
+  const std::vector<std::uint32_t> expected = cycles_walked(b, order[half + 5], {});
+  ASSERT_EQ(expected.size(), 2u);
+  for_each_context({2u}, {16u}, [&](const RunContext& ctx, const RunProfile& profile) {
+    TouchingPoints points;
+    EXPECT_EQ(points.cycles(b, order[half + 5], {}, ctx, link_tasks(b.size(), ctx.partitions)),
+              expected);
+    // The jumps were too many: one pass found that, the walk went node by node.
+    EXPECT_EQ(std::count_if(profile.phases.begin(), profile.phases.end(),
+                            [](const auto& p) { return p.name == "bridge: link jumps"; }),
+              PEAR_HAS_THREADS ? 1 : 0);
+  });
 }
 
 }  // namespace

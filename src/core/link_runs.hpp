@@ -1,0 +1,77 @@
+// A boundary made of rings is long runs of consecutive node numbers: node u links to u + 1 but
+// where a ring ends, a bridge or a split joins, or a node was unlinked. Its cycles can then be
+// walked run by run, a few hundred steps on a coast of a million nodes, once the links that
+// jump are known; those are found by parallel tasks over node ranges. Used where a walk node by
+// node would be a serial phase of a parallel run (SharedBoundary::start, TouchingPoints::cycles).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/boundary.hpp"
+#include "core/stage.hpp"
+
+namespace pear::detail {
+
+/// The fewest nodes worth a task of their own in a pass over the links.
+inline constexpr std::size_t min_nodes_per_link_task = 16384;
+/// Runs pay off when they are this long on average; with more jumps (a boundary that clipping
+/// or splitting has rearranged) the callers walk node by node.
+inline constexpr std::size_t min_nodes_per_run = 64;
+
+/// A stretch of a cycle whose nodes are consecutive numbers: `length` nodes from `first`.
+struct LinkRun {
+  std::uint32_t first, length;
+};
+
+/// The tasks a pass over `nodes` nodes takes at `partitions` partitions.
+inline std::size_t link_tasks(std::size_t nodes, std::uint32_t partitions) {
+  return std::clamp<std::size_t>(nodes / min_nodes_per_link_task, 1, partitions);
+}
+
+/// Every node u with b.next[u] != u + 1, ascending, found by `tasks` tasks of ctx (phase
+/// `phase`), each calling also `visit(first, last)` for its range of nodes (to fill arrays
+/// there). Returns false, with `jumps` incomplete, when they are more than one in
+/// min_nodes_per_run nodes.
+template <class Visit>
+bool find_link_jumps(const Boundary& b, const RunContext& ctx, const char* phase, std::size_t tasks,
+                     std::vector<std::uint32_t>& jumps, Visit&& visit) {
+  const std::size_t size = b.size(), most = size / min_nodes_per_run + 1;
+  std::vector<std::vector<std::uint32_t>> found(tasks);
+  ctx.run_tasks(phase, tasks, [&](std::size_t task) {
+    const std::size_t first = size * task / tasks, last = size * (task + 1) / tasks;
+    visit(first, last);
+    for (std::size_t u = first; u < last && found[task].size() <= most; ++u)
+      if (b.next[u] != u + 1) found[task].push_back(static_cast<std::uint32_t>(u));
+  });
+  jumps.clear();
+  for (const auto& part : found) jumps.insert(jumps.end(), part.begin(), part.end());
+  return jumps.size() <= most;
+}
+
+/// The sorted, distinct nodes the jumps land on, and `also` (a cycle's entry): where runs
+/// start.
+inline std::vector<std::uint32_t> run_heads(const Boundary& b,
+                                            const std::vector<std::uint32_t>& jumps,
+                                            std::uint32_t also) {
+  std::vector<std::uint32_t> heads{also};
+  for (std::uint32_t u : jumps) heads.push_back(b.next[u]);
+  std::sort(heads.begin(), heads.end());
+  heads.erase(std::unique(heads.begin(), heads.end()), heads.end());
+  return heads;
+}
+
+/// The run from `head`: it ends at the first jump at or after head, or before the next head.
+/// `jumps` and `heads` ascending; false when no jump follows (the links do not close).
+inline bool run_from(std::uint32_t head, const std::vector<std::uint32_t>& jumps,
+                     const std::vector<std::uint32_t>& heads, LinkRun& run) {
+  const auto jump = std::lower_bound(jumps.begin(), jumps.end(), head);
+  const auto after = std::upper_bound(heads.begin(), heads.end(), head);
+  if (jump == jumps.end()) return false;
+  const std::uint32_t last = after == heads.end() ? *jump : std::min(*jump, *after - 1);
+  run = {head, last - head + 1};
+  return true;
+}
+
+}  // namespace pear::detail
