@@ -5,10 +5,10 @@
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
 //   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1
-//   cdt16t1 mc16t1 dc16t1 auto16t1 auto16t1cdt mc2 dc2 auto2 cdt2
-// Each phase also shows its share of the time on 16 threads by Brent's bound, max(work / 16,
-// longest task), and the header their sum: on the 16-partition configurations, the phases that
-// bound the work/span projection (docs/scaling.md).
+//   cdt16t1 mc16t1 dc16t1 auto4t1 auto16t1 auto16t1cdt mc2 dc2 auto2 cdt2
+// Each phase also shows its share of the time on k threads by Brent's bound, max(work / k,
+// longest task), k the configuration's partitions (else its threads), and the header their sum:
+// the phases that bound the work/span projection (docs/scaling.md).
 //
 // Cache misses per phase: run one configuration under cachegrind (bench/profile/README.md).
 #include <algorithm>
@@ -59,6 +59,8 @@ std::vector<Config> configs() {
   all.back().options.partitions = 16;
   add("dc16t1", Algorithm::divide_and_conquer, 1, false);
   all.back().options.partitions = 16;
+  add("auto4t1", Algorithm::automatic, 1, false);  // what automatic picks at 4 partitions
+  all.back().options.partitions = 4;
   add("auto16t1", Algorithm::automatic, 1, false);  // what automatic picks at 16 partitions
   all.back().options.partitions = 16;
   add("auto16t1cdt", Algorithm::automatic, 1, true);
@@ -105,21 +107,23 @@ void profile(const pear::Polygon& polygon, const Config& config, int runs) {
       b.span = std::min(b.span, t.span);
     }
   }
-  // Each phase's share of the time on 16 threads by Brent's bound, max(work / 16, longest
-  // task): the phases that bound RunProfile::projected(16).
-  const auto at16 = [](const PhaseTimes& t) { return std::max(t.work / 16, t.span); };
+  // Each phase's share of the time on k threads (k the partitions, else the threads) by
+  // Brent's bound, max(work / k, longest task): the phases that bound RunProfile::projected(k).
+  const unsigned k =
+      std::max(1u, config.options.partitions ? config.options.partitions : config.options.threads);
+  const auto at_k = [&](const PhaseTimes& t) { return std::max(t.work / k, t.span); };
   double total = 0, span = 0, projected = 0;
   for (const auto& name : order) {
     total += best[name].work;
     span += best[name].span;
-    projected += at16(best[name]);
+    projected += at_k(best[name]);
   }
-  std::printf("%s: wall %.1f ms, recorded work %.1f ms, span %.1f ms, at 16 threads %.1f ms\n",
-              config.name, 1e3 * wall, 1e3 * total, 1e3 * span, 1e3 * projected);
+  std::printf("%s: wall %.1f ms, recorded work %.1f ms, span %.1f ms, at %u threads %.1f ms\n",
+              config.name, 1e3 * wall, 1e3 * total, 1e3 * span, k, 1e3 * projected);
   for (const auto& name : order)
-    std::printf("  %-44s %9.1f ms %5.1f%%  span %9.1f ms  at 16 %7.2f ms\n", name.c_str(),
-                1e3 * best[name].work, 100 * best[name].work / total, 1e3 * best[name].span,
-                1e3 * at16(best[name]));
+    std::printf("  %-44s %9.1f ms %5.1f%%  span %9.1f ms  at %2u %7.2f ms\n", name.c_str(),
+                1e3 * best[name].work, 100 * best[name].work / total, 1e3 * best[name].span, k,
+                1e3 * at_k(best[name]));
 }
 
 }  // namespace
