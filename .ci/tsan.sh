@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # ThreadSanitizer run of the scheduler's tests (deque, executor, task graphs) and of the
 # parallel variants' tricky cases (several chains, chunks and parts at 2-8 threads), hole
-# bridging in parts (the searches as tasks at 2-8 threads) and the parallel CDT's cases (flips in
-# breadth-first sets, border rounds, the bucketed adjacency build), cleaning in parallel passes
-# and the simplicity check's runs (prepared and walked in tasks).
+# bridging in parts (the searches as tasks at 2-8 threads), the walks over runs of consecutive
+# nodes (partition-and-cut's start, the cycles after untangling), the parallel CDT's cases
+# (flips in breadth-first sets, border rounds, the bucketed adjacency build), cleaning in
+# parallel passes and the simplicity check's runs (prepared and walked in tasks).
 # Usage: .ci/tsan.sh [build-dir]   (default: build-tsan in the repository root)
 # The sanitizer build is separate: only the library and the scheduler tests are compiled.
 set -euo pipefail
@@ -23,6 +24,7 @@ ninja -C "$build" -j"${JOBS:-2}" \
   tests/scheduler/scheduler_executor_test \
   tests/scheduler/scheduler_graph_test \
   tests/parallel/parallel_variants_test \
+  tests/parallel/shared_boundary_test \
   tests/earclip/earclip_bridge_test \
   tests/parallel/divide_conquer_test \
   tests/cdt/cdt_test \
@@ -38,6 +40,7 @@ meson test -C "$build" --suite scheduler --no-rebuild --print-errorlogs
 # test below runs the same parallel phases on small polygons (its generated families, too, only
 # there: under TSan they take seconds).
 "$build/tests/parallel/parallel_variants_test" --gtest_filter='Tricky.*:-Tricky.ManyHolesBridgedInParts'
+"$build/tests/parallel/shared_boundary_test"
 "$build/tests/earclip/earclip_bridge_test" --gtest_filter='-*GeneratedFamilies'
 "$build/tests/parallel/divide_conquer_test" --gtest_filter='DivideAndConquer.*'
 "$build/tests/cdt/cdt_test" --gtest_filter='Cdt.*'
