@@ -38,7 +38,6 @@ constexpr std::size_t max_mesh_parts = 256;
 struct EdgeBuckets {
   std::size_t parts = 1;
   std::uint32_t shift = 0;          ///< bucket(v) = v >> shift (a division is slow)
-  std::size_t width = 1;            ///< vertices per bucket: 1 << shift
   std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
   std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
   std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
@@ -73,7 +72,7 @@ void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, s
     keys.low[e] = low;
     keys.high[e] = high;
     highest = std::max(highest, high);
-    ++counts[row][(low >> shift) & (max_mesh_parts - 1)];
+    if (buckets.parts > 1) ++counts[row][(low >> shift) & (max_mesh_parts - 1)];
   };
   const auto [t0, t1] = chunk_of(triangles.size(), buckets.parts, c);
   for (std::size_t t = t0; t < t1; ++t)
@@ -223,7 +222,6 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   // stay empty.
   const std::size_t per_part = (points.size() + buckets.parts - 1) / buckets.parts;
   while ((std::size_t{1} << buckets.shift) < per_part) ++buckets.shift;
-  buckets.width = std::size_t{1} << buckets.shift;
   ctx.run_serial("cdt adjacency: allocate", [&] {
     mesh.points = points;
     mesh.triangles = &triangles;
@@ -256,8 +254,9 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
       const std::span<const std::uint32_t> bucket(buckets.edges.get() + buckets.begin[b],
                                                   buckets.begin[b + 1] - buckets.begin[b]);
-      const auto first_vertex = static_cast<std::uint32_t>(b * buckets.width);
-      matches[b] = match_bucket(mesh, keys, bucket, first_vertex, buckets.width);
+      const std::size_t width = std::size_t{1} << buckets.shift;
+      const auto first_vertex = static_cast<std::uint32_t>(b * width);
+      matches[b] = match_bucket(mesh, keys, bucket, first_vertex, width);
     });
   }
   bool built = true;

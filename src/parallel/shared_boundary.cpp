@@ -34,9 +34,7 @@ std::vector<LinkRun> cycle_runs(const Boundary& b, std::uint32_t entry,
 }
 
 }  // namespace
-#endif
 
-#if PEAR_HAS_THREADS
 void SharedBoundary::walk_cycle(std::uint32_t entry, const RunContext& ctx) {
   const std::size_t size = b->size();
   const std::size_t parts = link_tasks(size, ctx.partitions);
