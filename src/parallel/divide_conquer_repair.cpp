@@ -95,11 +95,16 @@ std::uint32_t SteinerRepair::find(PieceCorner from, PieceCorner to) const {
 /// The edge glued to `edge` in the other removed triangle on it; none when it bounds the hole:
 /// no such triangle, or the edge lies on the input boundary (the two sides of a bridge are
 /// reverse edges between the same points, but stay apart).
-std::uint32_t SteinerRepair::across(std::uint32_t edge) const {
+std::uint32_t SteinerRepair::glued(std::uint32_t edge) const {
   if (on_boundary_[edge / 3] >> (edge % 3) & 1) return none;
   const SteinerTriangle& t = triangles_[edge / 3];
   const std::uint32_t reverse = find(t[(edge % 3 + 1) % 3], t[edge % 3]);
   return reverse == none || (on_boundary_[reverse / 3] >> (reverse % 3) & 1) ? none : reverse;
+}
+
+/// glued(edge), looked up once per edge (the walks and the groups ask again and again).
+std::uint32_t SteinerRepair::across(std::uint32_t edge) const {
+  return across_[edge];
 }
 
 /// The hole's boundary edge after `edge` (hole on the left): turn around its end through the
@@ -166,6 +171,8 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
   });
   for (std::size_t i = 1; i < edges_.size(); ++i)
     if (edges_[i].from == edges_[i - 1].from && edges_[i].to == edges_[i - 1].to) return false;
+  across_.resize(edges_.size());
+  for (std::uint32_t id = 0; id < across_.size(); ++id) across_[id] = glued(id);
   std::vector<std::uint8_t> visited(edges_.size(), 0);
   std::vector<std::uint32_t> hole_starts;
   for (std::uint32_t id = 0; id < visited.size(); ++id) {
@@ -206,15 +213,20 @@ bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>&
     int sign;
   };
   std::vector<Use> uses;
-  const auto add = [&](PieceCorner from, PieceCorner to, int sign) {
-    from = canonical(from), to = canonical(to);
+  uses.reserve(3 * (fill.size() + triangles_.size()));
+  // Corners already canonical: the removed triangles' (canonicalize) and the fill's (its
+  // corners are the holes' nodes, taken from those triangles).
+  const auto add_canonical = [&](PieceCorner from, PieceCorner to, int sign) {
     if (from < to) uses.push_back({from, to, sign});
     if (to < from) uses.push_back({to, from, -sign});
   };
+  const auto add = [&](PieceCorner from, PieceCorner to, int sign) {
+    add_canonical(canonical(from), canonical(to), sign);
+  };
   for (const SteinerTriangle& t : fill)
-    for (int c = 0; c < 3; ++c) add(t[c], t[(c + 1) % 3], 1);
+    for (int c = 0; c < 3; ++c) add_canonical(t[c], t[(c + 1) % 3], 1);
   for (const SteinerTriangle& t : triangles_)
-    for (int c = 0; c < 3; ++c) add(t[c], t[(c + 1) % 3], -1);
+    for (int c = 0; c < 3; ++c) add_canonical(t[c], t[(c + 1) % 3], -1);
   // Each split input edge: + (a -> s1 -> ... -> b) - (a -> b), Steiner points in edge order.
   std::vector<PieceCorner> steiner = all_steiner_points(lines);
   const auto& point = [&](PieceCorner c) -> const SteinerPoint& {

@@ -70,6 +70,7 @@ class SteinerRepair {
                     const std::vector<SteinerTriangle>& triangles);
   PieceCorner canonical(PieceCorner c) const;
   std::uint32_t find(PieceCorner from, PieceCorner to) const;
+  std::uint32_t glued(std::uint32_t edge) const;
   std::uint32_t across(std::uint32_t edge) const;
   std::uint32_t next_on_boundary(std::uint32_t edge) const;
   bool walk_hole(std::uint32_t start, std::vector<std::uint8_t>& visited);
@@ -78,8 +79,9 @@ class SteinerRepair {
   std::vector<std::pair<PieceCorner, PieceCorner>> canonical_;  ///< sorted by corner
   std::vector<SteinerTriangle> triangles_;                      ///< in canonical corners
   std::vector<std::uint8_t> on_boundary_;
-  std::vector<DirectedEdge> edges_;   ///< sorted by (from, to)
-  std::vector<std::uint32_t> nodes_;  ///< the holes' input nodes, one hole after another
+  std::vector<DirectedEdge> edges_;    ///< sorted by (from, to)
+  std::vector<std::uint32_t> across_;  ///< glued() of each edge (triangle * 3 + corner)
+  std::vector<std::uint32_t> nodes_;   ///< the holes' input nodes, one hole after another
   std::vector<std::uint32_t> starts_{0};
 };
 
