@@ -118,23 +118,20 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
   }
 }
 
-/// Redoes the triangles at Steiner points from input vertices, the holes spread over tasks.
+/// Redoes the triangles at Steiner points from input vertices: the search for the holes and
+/// the check in tasks where their passes allow, the holes spread over tasks.
 bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
                            const std::vector<PartResult>& parts, EarHeuristic heuristic,
                            MakeClipper make_clipper, const RunContext& ctx,
                            std::vector<TriangleList>& patches) {
   std::vector<SteinerTriangle> at_steiner;
+  std::vector<std::uint8_t> on_boundary;
+  for (const PartResult& part : parts) {
+    at_steiner.insert(at_steiner.end(), part.at_steiner.begin(), part.at_steiner.end());
+    on_boundary.insert(on_boundary.end(), part.on_boundary.begin(), part.on_boundary.end());
+  }
   SteinerRepair repair;
-  bool found = false;
-  ctx.run_serial("find Steiner holes", [&] {
-    std::vector<std::uint8_t> on_boundary;
-    for (const PartResult& part : parts) {
-      at_steiner.insert(at_steiner.end(), part.at_steiner.begin(), part.at_steiner.end());
-      on_boundary.insert(on_boundary.end(), part.on_boundary.begin(), part.on_boundary.end());
-    }
-    found = repair.find_holes(b, lines, at_steiner, std::move(on_boundary));
-  });
-  if (!found) return false;
+  if (!repair.find_holes(b, lines, at_steiner, std::move(on_boundary), ctx)) return false;
   const std::size_t holes = repair.hole_count();
   const std::size_t tasks = std::min<std::size_t>(std::max(1u, ctx.partitions), holes);
   patches.assign(tasks, {});
@@ -159,13 +156,7 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
       ok[task] = repair.triangulate_hole(h, b, heuristic, scratch, patches[task], fills[task]);
   });
   if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
-  bool fits = false;
-  ctx.run_serial("check Steiner holes", [&] {
-    for (std::size_t task = 1; task < tasks; ++task)
-      fills[0].insert(fills[0].end(), fills[task].begin(), fills[task].end());
-    fits = repair.check_chain(b, lines, tasks > 0 ? fills[0] : std::vector<SteinerTriangle>{});
-  });
-  return fits;
+  return repair.check_chain(b, lines, fills, ctx);
 }
 
 /// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.

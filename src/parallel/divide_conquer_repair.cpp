@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 namespace {
@@ -41,6 +42,13 @@ CornerKey key_of(const Boundary& b, const std::vector<SplitLine>& lines, PieceCo
                                   : CornerKey{corner_line(c) + 1, q, p};
 }
 
+/// The tasks a pass of the repair over `items` triangles or edges takes: one per 1,024, at most
+/// one a partition.
+std::size_t repair_tasks(std::size_t items, const RunContext& ctx) {
+  if (!PEAR_HAS_THREADS) return 1;  // one loop a pass, and the bucketed check left out
+  return std::clamp<std::size_t>(items / 1024, 1, std::max(1u, ctx.partitions));
+}
+
 /// Every Steiner point, as a corner.
 std::vector<PieceCorner> all_steiner_points(const std::vector<SplitLine>& lines) {
   std::vector<PieceCorner> corners;
@@ -52,8 +60,18 @@ std::vector<PieceCorner> all_steiner_points(const std::vector<SplitLine>& lines)
 
 }  // namespace
 
-void SteinerRepair::canonicalize(const Boundary& b, const std::vector<SplitLine>& lines,
-                                 const std::vector<SteinerTriangle>& triangles) {
+/// triangles_ [from, to): the input triangles in canonical corners.
+void SteinerRepair::canonicalize(const std::vector<SteinerTriangle>& triangles, std::size_t from,
+                                 std::size_t to) {
+  for (std::size_t i = from; i < to; ++i)
+    triangles_[i] = {canonical(triangles[i][0]), canonical(triangles[i][1]),
+                     canonical(triangles[i][2])};
+}
+
+/// canonical_: every corner of the triangles and of the Steiner points' edges, with the first
+/// corner at its point.
+void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<SplitLine>& lines,
+                                      const std::vector<SteinerTriangle>& triangles) {
   std::vector<PieceCorner> corners = all_steiner_points(lines);
   for (std::size_t i = 0, steiner = corners.size(); i < steiner; ++i) {
     const SteinerPoint& s = lines[corner_line(corners[i])].steiner[corner_index(corners[i])];
@@ -72,9 +90,6 @@ void SteinerRepair::canonicalize(const Boundary& b, const std::vector<SplitLine>
     canonical_.push_back({keyed[i].second, keyed[first].second});
   }
   detail::sort(canonical_.begin(), canonical_.end());
-  triangles_.clear();
-  for (const SteinerTriangle& t : triangles)
-    triangles_.push_back({canonical(t[0]), canonical(t[1]), canonical(t[2])});
 }
 
 PieceCorner SteinerRepair::canonical(PieceCorner c) const {
@@ -154,25 +169,30 @@ bool SteinerRepair::holes_are_disks(const std::vector<std::uint32_t>& hole_start
   return true;
 }
 
-bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& lines,
-                               const std::vector<SteinerTriangle>& input,
-                               std::vector<std::uint8_t> on_boundary) {
-  canonicalize(b, lines, input);
-  on_boundary_ = std::move(on_boundary);
-  const std::vector<SteinerTriangle>& triangles = triangles_;
+/// edges_, sorted; false when a directed edge repeats (the triangles overlap).
+bool SteinerRepair::index_edges() {
   edges_.clear();
-  nodes_.clear();
-  starts_.assign(1, 0);
-  for (std::uint32_t t = 0; t < triangles.size(); ++t)
+  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
     for (std::uint32_t c = 0; c < 3; ++c)
-      edges_.push_back({triangles[t][c], triangles[t][(c + 1) % 3], 3 * t + c});
-  detail::sort(edges_.begin(), edges_.end(), [](const DirectedEdge& a, const DirectedEdge& b) {
-    return a.from < b.from || (a.from == b.from && a.to < b.to);
+      edges_.push_back({triangles_[t][c], triangles_[t][(c + 1) % 3], 3 * t + c});
+  detail::sort(edges_.begin(), edges_.end(), [](const DirectedEdge& p, const DirectedEdge& q) {
+    return p.from < q.from || (p.from == q.from && p.to < q.to);
   });
   for (std::size_t i = 1; i < edges_.size(); ++i)
     if (edges_[i].from == edges_[i - 1].from && edges_[i].to == edges_[i - 1].to) return false;
   across_.resize(edges_.size());
-  for (std::uint32_t id = 0; id < across_.size(); ++id) across_[id] = glued(id);
+  return true;
+}
+
+/// across_ [from, to).
+void SteinerRepair::glue(std::size_t from, std::size_t to) {
+  for (std::size_t id = from; id < to; ++id) across_[id] = glued(static_cast<std::uint32_t>(id));
+}
+
+/// Every hole's cycle (nodes_, starts_); false unless each is a disk.
+bool SteinerRepair::walk_holes() {
+  nodes_.clear();
+  starts_.assign(1, 0);
   std::vector<std::uint8_t> visited(edges_.size(), 0);
   std::vector<std::uint32_t> hole_starts;
   for (std::uint32_t id = 0; id < visited.size(); ++id) {
@@ -181,6 +201,36 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
     hole_starts.push_back(id);
   }
   return holes_are_disks(hole_starts);
+}
+
+bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& lines,
+                               const std::vector<SteinerTriangle>& input,
+                               std::vector<std::uint8_t> on_boundary, const RunContext& ctx) {
+  on_boundary_ = std::move(on_boundary);
+  triangles_.resize(input.size());
+  bool found = false;
+  if (!PEAR_HAS_THREADS) {  // one phase: a build without threads keeps no task passes (.wasm)
+    ctx.run_serial("find Steiner holes", [&] {
+      canonical_corners(b, lines, input);
+      canonicalize(input, 0, input.size());
+      found = index_edges() && (glue(0, edges_.size()), walk_holes());
+    });
+    return found;
+  }
+  // The passes over every triangle and edge in tasks; the sorts and the walks stay serial.
+  ctx.run_serial("find Steiner holes: corners", [&] { canonical_corners(b, lines, input); });
+  const std::size_t tasks = repair_tasks(input.size(), ctx);
+  ctx.run_tasks("find Steiner holes: canonical", tasks, [&](std::size_t task) {
+    canonicalize(input, input.size() * task / tasks, input.size() * (task + 1) / tasks);
+  });
+  ctx.run_serial("find Steiner holes: edges", [&] { found = index_edges(); });
+  if (!found) return false;
+  const std::size_t edge_tasks = repair_tasks(edges_.size(), ctx);
+  ctx.run_tasks("find Steiner holes: glue", edge_tasks, [&](std::size_t task) {
+    glue(edges_.size() * task / edge_tasks, edges_.size() * (task + 1) / edge_tasks);
+  });
+  ctx.run_serial("find Steiner holes: walk", [&] { found = walk_holes(); });
+  return found;
 }
 
 bool SteinerRepair::triangulate_hole(std::size_t h, const Boundary& b, EarHeuristic heuristic,
@@ -206,28 +256,43 @@ bool SteinerRepair::triangulate_hole(std::size_t h, const Boundary& b, EarHeuris
   return true;
 }
 
-bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>& lines,
-                                const std::vector<SteinerTriangle>& fill) const {
-  struct Use {
-    PieceCorner lo, hi;
-    int sign;
-  };
-  std::vector<Use> uses;
-  uses.reserve(3 * (fill.size() + triangles_.size()));
-  // Corners already canonical: the removed triangles' (canonicalize) and the fill's (its
-  // corners are the holes' nodes, taken from those triangles).
-  const auto add_canonical = [&](PieceCorner from, PieceCorner to, int sign) {
-    if (from < to) uses.push_back({from, to, sign});
-    if (to < from) uses.push_back({to, from, -sign});
-  };
+namespace {
+
+/// Which of `buckets` groups an edge's uses go to: every use of an edge lands in one.
+std::size_t bucket_of(const ChainUse& u, std::size_t buckets) {
+  const std::uint64_t mixed = (u.lo * 0x9E3779B97F4A7C15u) ^ (u.hi * 0xC2B2AE3D27D4EB4Fu);
+  return static_cast<std::size_t>((mixed >> 32) % buckets);
+}
+
+/// Whether every edge's uses among `uses` add up to 0.
+bool every_sum_zero(std::vector<ChainUse>& uses) {
+  detail::sort(uses.begin(), uses.end(), [](const ChainUse& u, const ChainUse& v) {
+    return u.lo < v.lo || (u.lo == v.lo && u.hi < v.hi);
+  });
+  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
+    int sum = 0;
+    for (j = i; j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi; ++j)
+      sum += uses[j].sign;
+    if (sum != 0) return false;
+  }
+  return true;
+}
+
+/// Adds the use of the directed edge from -> to (canonical corners) with `sign`.
+void add_use(std::vector<ChainUse>& uses, PieceCorner from, PieceCorner to, int sign) {
+  if (from < to) uses.push_back({from, to, sign});
+  if (to < from) uses.push_back({to, from, -sign});
+}
+
+}  // namespace
+
+/// The chains' terms, each split input edge + (a -> s1 -> ... -> b) - (a -> b) with its
+/// Steiner points in edge order, in canonical corners.
+void SteinerRepair::add_split_edges(const Boundary& b, const std::vector<SplitLine>& lines,
+                                    std::vector<ChainUse>& uses) const {
   const auto add = [&](PieceCorner from, PieceCorner to, int sign) {
-    add_canonical(canonical(from), canonical(to), sign);
+    add_use(uses, canonical(from), canonical(to), sign);
   };
-  for (const SteinerTriangle& t : fill)
-    for (int c = 0; c < 3; ++c) add_canonical(t[c], t[(c + 1) % 3], 1);
-  for (const SteinerTriangle& t : triangles_)
-    for (int c = 0; c < 3; ++c) add_canonical(t[c], t[(c + 1) % 3], -1);
-  // Each split input edge: + (a -> s1 -> ... -> b) - (a -> b), Steiner points in edge order.
   std::vector<PieceCorner> steiner = all_steiner_points(lines);
   const auto& point = [&](PieceCorner c) -> const SteinerPoint& {
     return lines[corner_line(c)].steiner[corner_index(c)];
@@ -247,16 +312,58 @@ bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>&
     add(first ? PieceCorner{s.from} : steiner[i - 1], steiner[i], 1);
     if (last) add(steiner[i], s.to, 1), add(s.from, s.to, -1);
   }
-  detail::sort(uses.begin(), uses.end(), [](const Use& u, const Use& v) {
-    return u.lo < v.lo || (u.lo == v.lo && u.hi < v.hi);
-  });
-  for (std::size_t i = 0, j = 0; i < uses.size(); i = j) {
-    int sum = 0;
-    for (j = i; j < uses.size() && uses[j].lo == uses[i].lo && uses[j].hi == uses[i].hi; ++j)
-      sum += uses[j].sign;
-    if (sum != 0) return false;
+}
+
+/// The uses go to buckets by edge (the removed triangles and the fills split among tasks), and
+/// each bucket's sums are checked by a task of its own: the check adds up edge by edge, so the
+/// verdict is the same for any number of buckets. The corners of the removed triangles and of
+/// the fills are canonical already (the fills' are the holes' nodes, taken from those
+/// triangles); only the split edges' are looked up.
+bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>& lines,
+                                const std::vector<std::vector<SteinerTriangle>>& fills,
+                                const RunContext& ctx) const {
+  std::vector<ChainUse> uses;
+  // The triangles in one numbering, fills first: +1 for a fill's edges, -1 for a removed one's.
+  std::vector<std::size_t> starts(1, 0);
+  for (const auto& fill : fills) starts.push_back(starts.back() + fill.size());
+  const std::size_t filled = starts.back(), total = filled + triangles_.size();
+  // The uses of the triangles [from, to) of that numbering.
+  const auto add_triangles = [&](std::vector<ChainUse>& to_uses, std::size_t from, std::size_t to) {
+    const auto add_share = [&](const std::vector<SteinerTriangle>& list, std::size_t first,
+                               int sign) {
+      for (std::size_t i = std::max(from, first); i < std::min(to, first + list.size()); ++i)
+        for (int c = 0; c < 3; ++c)
+          add_use(to_uses, list[i - first][c], list[i - first][(c + 1) % 3], sign);
+    };
+    for (std::size_t f = 0; f < fills.size(); ++f) add_share(fills[f], starts[f], 1);
+    add_share(triangles_, filled, -1);
+  };
+  const std::size_t buckets = repair_tasks(total, ctx);
+  bool zero = false;
+  if (!PEAR_HAS_THREADS || buckets == 1) {  // a build without threads keeps only this path
+    ctx.run_serial("check Steiner holes", [&] {
+      add_split_edges(b, lines, uses);
+      add_triangles(uses, 0, total);
+      zero = every_sum_zero(uses);
+    });
+    return zero;
   }
-  return true;
+  ctx.run_serial("check Steiner holes: split edges", [&] { add_split_edges(b, lines, uses); });
+  std::vector<std::vector<std::vector<ChainUse>>> bucketed(
+      buckets, std::vector<std::vector<ChainUse>>(buckets));
+  ctx.run_tasks("check Steiner holes: edges", buckets, [&](std::size_t task) {
+    std::vector<ChainUse> share = task == 0 ? uses : std::vector<ChainUse>{};
+    add_triangles(share, total * task / buckets, total * (task + 1) / buckets);
+    for (const ChainUse& u : share) bucketed[task][bucket_of(u, buckets)].push_back(u);
+  });
+  std::vector<std::uint8_t> zeros(buckets, 0);
+  ctx.run_tasks("check Steiner holes: sums", buckets, [&](std::size_t bucket) {
+    std::vector<ChainUse> gathered;
+    for (std::size_t task = 0; task < buckets; ++task)
+      gathered.insert(gathered.end(), bucketed[task][bucket].begin(), bucketed[task][bucket].end());
+    zeros[bucket] = every_sum_zero(gathered);
+  });
+  return std::find(zeros.begin(), zeros.end(), 0) == zeros.end();
 }
 
 }  // namespace pear::detail

@@ -18,12 +18,19 @@
 #include <vector>
 
 #include "core/cycle_clipper.hpp"
+#include "core/stage.hpp"
 #include "split_pieces.hpp"
 
 namespace pear::detail {
 
 /// A triangle of a part with at least one Steiner corner, counterclockwise.
 using SteinerTriangle = std::array<PieceCorner, 3>;
+
+/// An undirected edge's use in the repair's chain check: +1 from lo to hi, -1 the other way.
+struct ChainUse {
+  PieceCorner lo, hi;
+  int sign;
+};
 
 /// A task's scratch memory for clipping holes.
 struct HoleClipper {
@@ -40,9 +47,11 @@ class SteinerRepair {
   /// on both sides of a bridge are one), as the clippers may use either at a pinch. Returns
   /// false when a group is not a disk or the triangles do not fit together. Bit c of
   /// on_boundary[t] says that edge c -> c + 1 of triangle t lies on the input boundary.
+  /// In tasks of ctx where a pass is worth them (phases "find Steiner holes: ..."); the same
+  /// holes for any partitions.
   bool find_holes(const Boundary& b, const std::vector<SplitLine>& lines,
                   const std::vector<SteinerTriangle>& triangles,
-                  std::vector<std::uint8_t> on_boundary);
+                  std::vector<std::uint8_t> on_boundary, const RunContext& ctx);
 
   std::size_t hole_count() const { return starts_.size() - 1; }
   /// How many nodes the holes before h have together.
@@ -55,10 +64,13 @@ class SteinerRepair {
                         HoleClipper& scratch, TriangleList& out,
                         std::vector<SteinerTriangle>& corners) const;
 
-  /// Whether the holes' triangles (`fill`) have the boundary of the removed triangles with
-  /// every input edge a -> s1 -> ... -> b through Steiner points replaced by a -> b.
+  /// Whether the holes' triangles (`fills`, in any number of lists) have the boundary of the
+  /// removed triangles with every input edge a -> s1 -> ... -> b through Steiner points
+  /// replaced by a -> b. In tasks of ctx (phases "check Steiner holes: ..."); the same verdict
+  /// for any partitions.
   bool check_chain(const Boundary& b, const std::vector<SplitLine>& lines,
-                   const std::vector<SteinerTriangle>& fill) const;
+                   const std::vector<std::vector<SteinerTriangle>>& fills,
+                   const RunContext& ctx) const;
 
  private:
   struct DirectedEdge {
@@ -66,8 +78,13 @@ class SteinerRepair {
     std::uint32_t id;  ///< triangle * 3 + corner of `from`
   };
   static constexpr std::uint32_t none = UINT32_MAX;
-  void canonicalize(const Boundary& b, const std::vector<SplitLine>& lines,
-                    const std::vector<SteinerTriangle>& triangles);
+  void canonical_corners(const Boundary& b, const std::vector<SplitLine>& lines,
+                         const std::vector<SteinerTriangle>& triangles);
+  void canonicalize(const std::vector<SteinerTriangle>& triangles, std::size_t from,
+                    std::size_t to);
+  bool index_edges();
+  void glue(std::size_t from, std::size_t to);
+  bool walk_holes();
   PieceCorner canonical(PieceCorner c) const;
   std::uint32_t find(PieceCorner from, PieceCorner to) const;
   std::uint32_t glued(std::uint32_t edge) const;
@@ -75,6 +92,8 @@ class SteinerRepair {
   std::uint32_t next_on_boundary(std::uint32_t edge) const;
   bool walk_hole(std::uint32_t start, std::vector<std::uint8_t>& visited);
   bool holes_are_disks(const std::vector<std::uint32_t>& hole_starts) const;
+  void add_split_edges(const Boundary& b, const std::vector<SplitLine>& lines,
+                       std::vector<ChainUse>& uses) const;
 
   std::vector<std::pair<PieceCorner, PieceCorner>> canonical_;  ///< sorted by corner
   std::vector<SteinerTriangle> triangles_;                      ///< in canonical corners

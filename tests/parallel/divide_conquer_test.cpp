@@ -11,6 +11,7 @@
 #include <string>
 
 #include "gtest_corpus.hpp"
+#include "pear/config.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
 #include "pear/validate.hpp"
@@ -173,6 +174,32 @@ TEST(DivideAndConquer, PieceClippedByTheFallbackOnACrossingHole) {
     const pear::Run one = divide_and_conquer(polygon, k, 1);
     for (unsigned threads : {2u, 8u})
       EXPECT_EQ(divide_and_conquer(polygon, k, threads).triangles, one.triangles) << threads;
+  }
+}
+
+/// The repair's search for the holes and its check in several tasks each (thousands of
+/// triangles at Steiner points): valid, no fallback, the same triangles at 1, 2 and 8 threads
+/// (expect_valid), and the tasks really split the passes (a build without threads has no such
+/// passes: one phase each).
+TEST(DivideAndConquer, RepairInTasks) {
+  const Polygon polygon = generate_polygon("random", 20000, 3);
+  expect_split_cleanly(polygon, {16});
+  RunProfile profile;
+  triangulate(polygon, Options{.algorithm = Algorithm::divide_and_conquer,
+                               .threads = 2,
+                               .partitions = 16,
+                               .profile = &profile});
+  std::size_t glue_tasks = 0, sum_tasks = 0, one_phase = 0;
+  for (const auto& phase : profile.phases) {
+    if (phase.name == "find Steiner holes: glue") glue_tasks = phase.task_seconds.size();
+    if (phase.name == "check Steiner holes: sums") sum_tasks = phase.task_seconds.size();
+    one_phase += phase.name == "find Steiner holes" || phase.name == "check Steiner holes";
+  }
+  if (PEAR_HAS_THREADS) {
+    EXPECT_GT(glue_tasks, 1u);
+    EXPECT_GT(sum_tasks, 1u);
+  } else {
+    EXPECT_EQ(one_phase, 2u);
   }
 }
 
