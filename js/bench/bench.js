@@ -1,7 +1,7 @@
 // pear.wasm against earcut.js (the devDependency, 3.2.4) in one node process, per polygon, on
-// the shared corpus (../shared/corpus, or PEAR_SHARED_CORPUS): CPU time, interleaved rounds,
-// the median round; then pear's validator on every output of both. docs/benchmarks.md shows
-// the figures.
+// the shared corpus (../shared/corpus, or PEAR_SHARED_CORPUS): CPU time, interleaved rounds;
+// polygons/s from the median round, the ratios the median of each round's ratio; then pear's
+// validator on every output of both. docs/benchmarks.md shows the figures.
 //
 //   node bench/bench.js [--rounds 5] [--sets counties,glyphs,...] [--limit N] [--baseline OLD.wasm]
 // --baseline: another build of pear.wasm (`top`) in the same rounds, for a speed ratio that the
@@ -55,10 +55,12 @@ if (baselineFile) {
   contenders['baseline top'] = (p) => baselineTop.triangulate(p.coords, p.holes).triangleCount;
 }
 
-// CPU seconds for one pass over the polygons (each polygon repeated so a pass takes >= 50 ms).
+// CPU seconds for one pass over the polygons (the passes repeated so a round takes >= 50 ms):
+// each polygon once a pass, as a caller with many different polygons calls (the same polygon
+// called again and again lets the branch predictor learn it).
 function pass(run, polygons, repeat) {
   const start = process.cpuUsage();
-  for (const p of polygons) for (let r = 0; r < repeat; ++r) run(p);
+  for (let r = 0; r < repeat; ++r) for (const p of polygons) run(p);
   const used = process.cpuUsage(start);
   return (used.user + used.system) / 1e6 / repeat;
 }
@@ -102,7 +104,10 @@ function benchmark(name, polygons, rounds) {
     for (const c of order) times[c].push(pass(contenders[c], polygons, repeat));
   }
   const perSecond = Object.fromEntries(Object.entries(times).map(([c, t]) => [c, polygons.length / median(t)]));
-  return { name, polygons: polygons.length, vertices, perSecond, verdicts: verdicts(polygons) };
+  // Speed over another contender: the median over rounds of the two passes' ratio in the same
+  // round (side by side in time), steadier on a shared machine than the ratio of the medians.
+  const over = (c, base) => median(times[c].map((t, round) => times[base][round] / t));
+  return { name, polygons: polygons.length, vertices, perSecond, over, verdicts: verdicts(polygons) };
 }
 
 function format(value) {
@@ -127,6 +132,6 @@ for (const name of chosen) {
   const [e, f, t] = ['earcut.js', 'pear fast', 'pear top'].map((c) => r.perSecond[c]);
   const v = r.verdicts;
   console.log(`| ${name} | ${r.polygons} | ${r.vertices.toLocaleString('en-US')} | ${format(e)} | ${format(f)} | ${format(t)} | ` +
-    `${(f / e).toFixed(2)}x | ${(t / e).toFixed(2)}x | ${v.earcutInvalid} | ${v.pearNotOk} | ${v.pearOkInvalid} |` +
-    (baselineFile ? ` ${(t / r.perSecond['baseline top']).toFixed(3)}x |` : ''));
+    `${r.over('pear fast', 'earcut.js').toFixed(2)}x | ${r.over('pear top', 'earcut.js').toFixed(2)}x | ${v.earcutInvalid} | ${v.pearNotOk} | ${v.pearOkInvalid} |` +
+    (baselineFile ? ` ${r.over('pear top', 'baseline top').toFixed(3)}x |` : ''));
 }
