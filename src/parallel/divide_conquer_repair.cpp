@@ -169,7 +169,8 @@ bool SteinerRepair::holes_are_disks(const std::vector<std::uint32_t>& hole_start
   return true;
 }
 
-/// edges_, sorted; false when a directed edge repeats (the triangles overlap).
+/// edges_, sorted, and across_ sized for glue(); false when a directed edge repeats (the
+/// triangles overlap).
 bool SteinerRepair::index_edges() {
   edges_.clear();
   for (std::uint32_t t = 0; t < triangles_.size(); ++t)
