@@ -6,8 +6,9 @@
 // moments. Shuffled, not rotated: a rotation keeps each configuration after the same one, and
 // on a 16-core VM `top` ran up to 1.34x slower than `auto_t1`, the same computation.
 //
-//   pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] INPUT...
-//   (--rounds 0 with --phases: the profiled runs only)
+//   pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] [--configs NAME,...] INPUT...
+//   (--rounds 0 with --phases: the profiled runs only; --configs keeps the configurations
+//   named, e.g. top,pc_t16,auto_t16, for an A/B of two builds of the library in turn)
 //   INPUT: a GeoJSON polygon file (.json, or .json.gz with zlib) or FAMILY:N (generate_polygon)
 //
 // Writes a JSON array to stdout (bench/report/threads.py makes the table): the machine, then per
@@ -24,6 +25,7 @@
 #include <numeric>
 #include <random>
 #include <string>
+#include <string_view>
 #include <thread>
 #include <vector>
 
@@ -211,7 +213,7 @@ int main(int argc, char** argv) {
   std::vector<unsigned> thread_counts = {1, 2, 4, 8, 16};
   int rounds = 7;
   bool phases = false;
-  std::vector<std::string> specs;
+  std::vector<std::string> specs, only;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg == "--threads" && i + 1 < argc) {
@@ -220,6 +222,12 @@ int main(int argc, char** argv) {
       rounds = std::atoi(argv[++i]);
     } else if (arg == "--phases") {
       phases = true;
+    } else if (arg == "--configs" && i + 1 < argc) {
+      for (std::string_view list = argv[++i]; !list.empty();) {
+        const std::size_t comma = std::min(list.find(','), list.size());
+        only.emplace_back(list.substr(0, comma));
+        list.remove_prefix(std::min(comma + 1, list.size()));
+      }
     } else if (!arg.starts_with("--")) {
       specs.push_back(arg);
     } else {
@@ -229,7 +237,8 @@ int main(int argc, char** argv) {
   }
   if (specs.empty() || thread_counts.empty() || rounds < 0 || (rounds == 0 && !phases)) {
     std::fprintf(stderr,
-                 "usage: pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] INPUT...\n"
+                 "usage: pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases]"
+                 " [--configs NAME,...] INPUT...\n"
                  "INPUT: a GeoJSON polygon file or FAMILY:N\n");
     return 2;
   }
@@ -239,7 +248,15 @@ int main(int argc, char** argv) {
       .field("hardware_threads", std::thread::hardware_concurrency())
       .field("rounds", rounds)
       .end_object();
-  const std::vector<Config> all = configs(thread_counts);
+  std::vector<Config> all = configs(thread_counts);
+  if (!only.empty())
+    std::erase_if(all, [&](const Config& c) {
+      return std::find(only.begin(), only.end(), c.name) == only.end();
+    });
+  if (all.empty()) {
+    std::fprintf(stderr, "pear_threads: no configuration left by --configs\n");
+    return 2;
+  }
   for (const std::string& spec : specs) {
     try {
       const Input input = load(spec);

@@ -10,7 +10,7 @@
 #include <algorithm>
 
 #include "core/ear_test.hpp"
-#include "shared_boundary.hpp"
+#include "variant_scratch.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
@@ -20,14 +20,21 @@ constexpr std::size_t min_chunk_nodes = 256;  ///< below this a task costs more 
 
 class MarkAndCut {
  public:
-  MarkAndCut(SharedBoundary& s, std::size_t chunks, const RunContext& ctx)
-      : s_(s), b_(*s.b), ctx_(ctx), ears_(chunks), triangles_(chunks) {
-    marks_ = s.place_landmarks(chunks, 0, ctx, true);
+  MarkAndCut(VariantScratch& scratch, std::size_t chunks, const RunContext& ctx)
+      : s_(scratch.shared),
+        b_(*s_.b),
+        ctx_(ctx),
+        chunks_(chunks),
+        ears_(scratch.ears),
+        triangles_(scratch.parts) {
+    if (ears_.size() < chunks) ears_.resize(chunks);
+    if (triangles_.size() < chunks) triangles_.resize(chunks);
+    marks_ = s_.place_landmarks(chunks, 0, ctx, true);
   }
 
   /// One round; returns the number of ears clipped.
   std::size_t round(TriangleList& out) {
-    const std::size_t chunks = ears_.size();
+    const std::size_t chunks = chunks_;
     ctx_.run_tasks("mark and test", chunks, [&](std::size_t c) { mark_and_test(c); });
     ctx_.run_tasks("cut", chunks, [&](std::size_t c) { cut(c); });
     ctx_.run_tasks("update", chunks, [&](std::size_t c) { update(c); });
@@ -93,20 +100,22 @@ class MarkAndCut {
   SharedBoundary& s_;
   Boundary& b_;
   const RunContext& ctx_;
+  std::size_t chunks_;
   std::vector<std::size_t> marks_;
-  std::vector<std::vector<std::uint32_t>> ears_;
-  std::vector<TriangleList> triangles_;
+  std::vector<std::vector<std::uint32_t>>& ears_;  ///< per chunk (the first chunks_ of them)
+  std::vector<TriangleList>& triangles_;
 };
 
 }  // namespace
 
 std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& ctx,
-                           TriangleList& out, SharedPositions shared) {
-  SharedBoundary s;
+                           TriangleList& out, VariantScratchPtr& scratch, SharedPositions shared) {
+  if (!scratch) scratch.reset(new VariantScratch);
+  SharedBoundary& s = scratch->shared;
   const std::size_t nodes = s.start(b, entry, ctx, shared);
   const std::size_t chunks = std::min<std::size_t>(ctx.partitions, nodes / min_chunk_nodes);
   if (chunks < 2) return entry;
-  MarkAndCut rounds(s, chunks, ctx);
+  MarkAndCut rounds(*scratch, chunks, ctx);
   // The paper stops when a cut phase clips fewer than 20 ears; a polygon that clips a few
   // hundred per round (a spiral) would otherwise walk all its nodes thousands of times.
   std::size_t live = nodes;

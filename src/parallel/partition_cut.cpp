@@ -5,7 +5,7 @@
 // then finishes the rest with all its fallbacks.
 #include <algorithm>
 
-#include "chain_clipper.hpp"
+#include "variant_scratch.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
@@ -31,16 +31,24 @@ void gather(std::vector<TriangleList>& parts, std::size_t count, const RunContex
 
 }  // namespace
 
+void VariantScratchDeleter::operator()(VariantScratch* scratch) const noexcept {
+  delete scratch;
+}
+
 std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                                const RunContext& ctx, TriangleList& out, SharedPositions shared) {
+                                const RunContext& ctx, TriangleList& out,
+                                VariantScratchPtr& scratch, SharedPositions shared) {
   const std::size_t partitions = ctx.partitions;
   if (partitions < 2) return entry;
-  SharedBoundary s;
+  if (!scratch) scratch.reset(new VariantScratch);
+  SharedBoundary& s = scratch->shared;
   std::size_t nodes = s.start(b, entry, ctx, shared);
   // A clipper (with its queue) for each chain there can be, not for each partition asked for.
   const std::size_t most = std::min(partitions, nodes / min_chain_nodes);
-  std::vector<ChainClipper> clippers(most);
-  std::vector<TriangleList> parts(most);
+  std::vector<ChainClipper>& clippers = scratch->clippers;
+  std::vector<TriangleList>& parts = scratch->parts;
+  if (clippers.size() < most) clippers.resize(most);
+  if (parts.size() < most) parts.resize(most);
   for (int round = 0; round < max_rounds; ++round) {
     const std::size_t chains = std::min(partitions, nodes / min_chain_nodes);
     if (chains < 2) break;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 
 #include "core/boundary.hpp"
 #include "core/cycle_clipper.hpp"
@@ -13,6 +14,14 @@ namespace pear::detail {
 
 inline constexpr std::uint32_t no_node = UINT32_MAX;
 
+/// Partition-and-cut's and mark-and-cut's arrays, kept between runs (variant_scratch.hpp);
+/// opaque here, so that the engine's header and destructor stay small.
+struct VariantScratch;
+struct VariantScratchDeleter {
+  void operator()(VariantScratch* scratch) const noexcept;
+};
+using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>;
+
 // The variants are never inlined into the engine (its one call site each would take them in
 // whole): the WebAssembly build compiles them for size and the engine for speed (src/meson.build).
 
@@ -20,15 +29,18 @@ inline constexpr std::uint32_t no_node = UINT32_MAX;
 /// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
 /// (chain after chain) to `out` and returns a live node of what is left for the sequential
 /// engine to finish, or no_node when nothing is left. `shared`: the nodes at repeated positions
-/// when the engine knows them (else they are hashed here).
+/// when the engine knows them (else they are hashed here). `scratch`: made on first use, kept
+/// for the next run.
 [[gnu::noinline]] std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry,
                                                   EarHeuristic heuristic, const RunContext& ctx,
-                                                  TriangleList& out, SharedPositions shared = {});
+                                                  TriangleList& out, VariantScratchPtr& scratch,
+                                                  SharedPositions shared = {});
 
 /// Paper §2.3: rounds of "mark every second convex node, clip in parallel the marked ones that
 /// are ears" until a round clips few; returns what is left, as partition_and_cut does.
 [[gnu::noinline]] std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry,
                                              const RunContext& ctx, TriangleList& out,
+                                             VariantScratchPtr& scratch,
                                              SharedPositions shared = {});
 
 /// Paper §2.1: splits the polygon bounded by the cycle through `entry` along ctx.partitions - 1

@@ -344,11 +344,12 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
                                 best_effort_vertex, region_ordered_);
     case Algorithm::partition_and_cut:
-      rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, shared_);
+      rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
+                               shared_);
       region_ordered_ = out.size();  // chain after chain: each chain's ears lie together
       break;
     case Algorithm::mark_and_cut:
-      rest = mark_and_cut(boundary_, entry, ctx, out, shared_);
+      rest = mark_and_cut(boundary_, entry, ctx, out, variant_scratch_, shared_);
       break;
     default:
       break;
