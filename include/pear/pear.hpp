@@ -90,6 +90,7 @@ class PEAR_API Triangulator {
   template <class Index = std::uint32_t, ring_range Rings>
   Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}) {
     Triangulation<Index> result;
+    if (!engine_) acquire(detail::vertex_count(rings));
     detail::FlatPolygon& flat = input_buffer();
     if (!detail::flatten(rings, flat)) {
       result.status = Status::index_overflow;
@@ -134,6 +135,7 @@ class PEAR_API Triangulator {
   /// Ear statistics of the cleaned, bridged boundary (no clipping is done).
   template <ring_range Rings>
   EarStatistics ear_statistics(const Rings& rings) {
+    if (!engine_) acquire(detail::vertex_count(rings));
     detail::FlatPolygon& flat = input_buffer();
     if (!detail::flatten(rings, flat)) return {};
     return run_statistics(PolygonView{flat.points, flat.ring_starts});
@@ -163,6 +165,9 @@ class PEAR_API Triangulator {
     }
   }
 
+  /// Takes an engine from the pool for a polygon of `vertices` (a large one gets the pool's
+  /// large engine, if it keeps one).
+  void acquire(std::size_t vertices);
   detail::FlatPolygon& input_buffer();
   std::vector<std::array<std::uint32_t, 3>>& triangle_buffer();
   Status run(const PolygonView& polygon, const Options& options,
@@ -183,6 +188,12 @@ Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}
   Triangulator triangulator;
   return triangulator.triangulate<Index>(rings, options);
 }
+
+/// Frees the engines (every stage's arrays) that calls keep for the next ones: up to 64 sized
+/// for small polygons, and the one a call on a polygon of more than 65,536 vertices left, which
+/// holds about 200 bytes a vertex of that polygon until this is called or the program ends.
+/// Triangulators in use keep theirs. Thread-safe.
+PEAR_API void release_cached_engines() noexcept;
 
 }  // namespace pear
 

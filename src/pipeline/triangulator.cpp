@@ -19,6 +19,10 @@ Triangulator& Triangulator::operator=(Triangulator&& other) noexcept {
   return *this;
 }
 
+void Triangulator::acquire(std::size_t vertices) {
+  engine_ = detail::acquire_engine(vertices);
+}
+
 detail::FlatPolygon& Triangulator::input_buffer() {
   if (!engine_) engine_ = detail::acquire_engine();
   return engine_->buffers().input;
@@ -35,7 +39,7 @@ namespace {
 Status run_engine(std::unique_ptr<detail::Engine>& engine, const detail::InputPolygon& polygon,
                   const Options& options, std::vector<std::array<std::uint32_t, 3>>& triangles,
                   std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
-  if (!engine) engine = detail::acquire_engine();
+  if (!engine) engine = detail::acquire_engine(polygon.size());
   if (options.profile) options.profile->phases.clear();
   return engine->run(polygon, options, triangles, diagnostics, delaunay);
 }
@@ -62,6 +66,10 @@ Status Triangulator::run(const CoordinateView& polygon, const Options& options,
 EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {
   if (!engine_) engine_ = detail::acquire_engine();
   return engine_->statistics(polygon);
+}
+
+void release_cached_engines() noexcept {
+  detail::release_pooled_engines();
 }
 
 }  // namespace pear

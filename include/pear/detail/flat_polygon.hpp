@@ -3,6 +3,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <ranges>
 #include <type_traits>
 #include <vector>
 
@@ -19,6 +20,20 @@ struct FlatPolygon {
     ring_starts.clear();
   }
 };
+
+/// The number of points in a ring range (each ring's size where it has one).
+template <ring_range Rings>
+std::size_t vertex_count(const Rings& rings) {
+  std::size_t count = 0;
+  for (const auto& ring : rings) {
+    if constexpr (std::ranges::sized_range<decltype(ring)>) {
+      count += static_cast<std::size_t>(std::ranges::size(ring));
+    } else {
+      for ([[maybe_unused]] const auto& point : ring) ++count;
+    }
+  }
+  return count;
+}
 
 /// Copies any ring range into a FlatPolygon. Returns false when the count exceeds 2^32 - 2.
 template <ring_range Rings>
