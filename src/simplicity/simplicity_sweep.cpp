@@ -114,30 +114,14 @@ std::optional<std::uint32_t> sweep(const RingEdges& edges, std::span<const std::
   return std::nullopt;
 }
 
-/// Each slab's edges: borders at x-quantiles of the edges' left ends, an edge in every slab its
-/// x-range meets. A conflict's point lies in both edges' x-ranges, so its slab holds both edges:
-/// the slabs together miss no conflict (nor a vertex inside an edge).
+/// Each slab's edges (slab_borders), an edge in every slab its x-range meets. A conflict's
+/// point lies in both edges' x-ranges, so its slab holds both edges: the slabs together miss no
+/// conflict (nor a vertex inside an edge), wherever the borders are.
 std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::uint32_t slabs,
                                                    const RunContext& ctx) {
   const std::uint32_t n = edges.size();
-  std::vector<double> borders(slabs - 1);
-  ctx.run_serial("check simplicity: slabs", [&] {
-    std::vector<double> left(n);
-    for (std::uint32_t e = 0; e < n; ++e) left[e] = edges.boxes[e].x0;
-    // Border s at the quantile s * n / slabs, each selected within the range its neighbours
-    // left: n log(slabs) steps, not n per border.
-    const auto place = [&](auto&& self, std::uint32_t low, std::uint32_t high, auto first,
-                           auto last) -> void {
-      if (high - low < 2) return;
-      const std::uint32_t mid = low + (high - low) / 2;
-      const auto at = left.begin() + static_cast<std::ptrdiff_t>(std::size_t{mid} * n / slabs);
-      std::nth_element(first, at, last);
-      borders[mid - 1] = *at;
-      self(self, low, mid, first, at);
-      self(self, mid, high, at + 1, last);
-    };
-    place(place, 0, slabs, left.begin(), left.end());
-  });
+  std::vector<double> borders;
+  ctx.run_serial("check simplicity: slabs", [&] { borders = slab_borders(edges, slabs); });
   const auto slab_of = [&](double x) {
     return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
                                     borders.begin());
@@ -164,6 +148,46 @@ std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::
 }
 
 }  // namespace
+
+/// Slab borders that give each slab about as many edges, an edge counted in every slab its
+/// x-range meets (what a slab's sweep costs): chosen on a sample of the edges (every n/m-th),
+/// by the smallest count per slab for which slabs - 1 borders, each placed as far right as
+/// that count allows, leave no more for the last slab. Quantiles of the left ends alone gave
+/// the 100k star's 12 slabs 8,332 to 19,890 edges (its longest sweep 2.9x its shortest).
+std::vector<double> slab_borders(const RingEdges& edges, std::uint32_t slabs) {
+  const std::size_t n = edges.size(), m = std::min<std::size_t>(n, std::size_t{256} * slabs);
+  std::vector<double> left(m), right(m);
+  for (std::size_t k = 0; k < m; ++k) {
+    const std::size_t e = k * n / m;
+    left[k] = edges.boxes[e].x0;
+    right[k] = edges.boxes[e].x1;
+  }
+  // 256 values a slab: the sort that costs the .wasm least is fast enough.
+  compact_sort(left.begin(), left.end(), std::less<>{});
+  compact_sort(right.begin(), right.end(), std::less<>{});
+  // Slab s holds x in [borders[s - 1], borders[s]): an edge meets it when x0 < borders[s] and
+  // x1 >= borders[s - 1]. Fills `borders` for `per_slab` and returns the last slab's count.
+  std::vector<double> borders(slabs - 1);
+  const auto place = [&](std::size_t per_slab) {
+    std::size_t ended = 0;  // sampled edges wholly left of the current slab
+    for (double& border : borders) {
+      border = left[std::min(m - 1, per_slab + ended)];
+      ended = static_cast<std::size_t>(std::lower_bound(right.begin(), right.end(), border) -
+                                       right.begin());
+    }
+    return m - ended;
+  };
+  std::size_t low = 1, high = m;  // place(high) fits: every border at the right end
+  while (low < high) {
+    const std::size_t mid = low + (high - low) / 2;
+    if (place(mid) <= mid)
+      high = mid;
+    else
+      low = mid + 1;
+  }
+  place(low);
+  return borders;
+}
 
 std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
                                          std::span<const std::uint32_t> subset) {
