@@ -97,8 +97,7 @@ class Engine {
   std::size_t region_ordered_ = 0;  ///< first triangles clipped region by region (for the CDT)
   Boundary part_;                   ///< a region copied out of boundary_
   EarClipper clipper_;
-  VariantScratchPtr
-      variant_scratch_;  ///< partition-and-cut's and mark-and-cut's, made on first use
+  VariantScratchPtr variant_scratch_;  ///< the parallel variants' arrays, made on first use
   std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
   std::vector<Point> caller_points_;                        ///< caller_points' copy

@@ -24,6 +24,15 @@ Pool& pool() {
   return instance;
 }
 
+/// Keeps `engine` (under the pool's lock); what it replaces or cannot keep is left in `engine`,
+/// to be freed after the lock.
+void keep(Pool& p, std::unique_ptr<Engine>& engine) {
+  if (engine->footprint() > kept_footprint)
+    std::swap(p.large, engine);  // the last large one: the next large call is likely its size
+  else if (p.engines.size() < kept_engines)
+    p.engines.push_back(std::move(engine));
+}
+
 }  // namespace
 
 std::unique_ptr<Engine> acquire_engine(std::size_t vertices) {
@@ -39,19 +48,6 @@ std::unique_ptr<Engine> acquire_engine(std::size_t vertices) {
   }
   return std::make_unique<Engine>();
 }
-
-namespace {
-
-/// Keeps `engine` (under the pool's lock); what it replaces or cannot keep is left in `engine`,
-/// to be freed after the lock.
-void keep(Pool& p, std::unique_ptr<Engine>& engine) {
-  if (engine->footprint() > kept_footprint)
-    std::swap(p.large, engine);  // the last large one: the next large call is likely its size
-  else if (p.engines.size() < kept_engines)
-    p.engines.push_back(std::move(engine));
-}
-
-}  // namespace
 
 void release_engine(std::unique_ptr<Engine> engine) noexcept {
   if (!engine) return;
