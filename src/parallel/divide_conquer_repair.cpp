@@ -5,6 +5,7 @@
 
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
+#include "shared_boundary.hpp"  // part_begin
 
 namespace pear::detail {
 namespace {
@@ -222,13 +223,15 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
   ctx.run_serial("find Steiner holes: corners", [&] { canonical_corners(b, lines, input); });
   const std::size_t tasks = repair_tasks(input.size(), ctx);
   ctx.run_tasks("find Steiner holes: canonical", tasks, [&](std::size_t task) {
-    canonicalize(input, input.size() * task / tasks, input.size() * (task + 1) / tasks);
+    canonicalize(input, part_begin(input.size(), tasks, task),
+                 part_begin(input.size(), tasks, task + 1));
   });
   ctx.run_serial("find Steiner holes: edges", [&] { found = index_edges(); });
   if (!found) return false;
   const std::size_t edge_tasks = repair_tasks(edges_.size(), ctx);
   ctx.run_tasks("find Steiner holes: glue", edge_tasks, [&](std::size_t task) {
-    glue(edges_.size() * task / edge_tasks, edges_.size() * (task + 1) / edge_tasks);
+    glue(part_begin(edges_.size(), edge_tasks, task),
+         part_begin(edges_.size(), edge_tasks, task + 1));
   });
   ctx.run_serial("find Steiner holes: walk", [&] { found = walk_holes(); });
   return found;
@@ -353,8 +356,8 @@ bool SteinerRepair::check_chain(const Boundary& b, const std::vector<SplitLine>&
   std::vector<std::vector<std::vector<ChainUse>>> bucketed(
       buckets, std::vector<std::vector<ChainUse>>(buckets));
   ctx.run_tasks("check Steiner holes: edges", buckets, [&](std::size_t task) {
-    std::vector<ChainUse> share = task == 0 ? uses : std::vector<ChainUse>{};
-    add_triangles(share, total * task / buckets, total * (task + 1) / buckets);
+    std::vector<ChainUse> share = task == 0 ? std::move(uses) : std::vector<ChainUse>{};
+    add_triangles(share, part_begin(total, buckets, task), part_begin(total, buckets, task + 1));
     for (const ChainUse& u : share) bucketed[task][bucket_of(u, buckets)].push_back(u);
   });
   std::vector<std::uint8_t> zeros(buckets, 0);
