@@ -570,7 +570,7 @@ Verdict SimplicityCheck::check(const CleanPolygon& polygon, const RunContext& ct
     if (auto decided = check_chains(polygon, ctx)) return *decided;
     index_edges(polygon, ctx);  // find_violation's steps, with the runs before the sweep
     SmallestViolation found;
-    if (!check_on_grid(edges_, GridLimits{}, ctx, root_, found))
+    if (!check_on_grid(edges_, GridLimits{}, ctx, root_, found, &verdict.touching))
       sweep_in_slabs(edges_, slab_count(edges_.size(), ctx.partitions), ctx, found);
     if (found.get() != SmallestViolation::none) verdict.violation = found.get();
     return verdict;

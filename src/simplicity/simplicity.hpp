@@ -98,6 +98,29 @@ struct GridLimits {
   bool allow_sweep = true;
 };
 
+/// A hole that lies outside the outer ring, or inside another hole.
+struct MisplacedHole {
+  std::uint32_t vertex;  ///< a vertex of the hole no other ring shares (into polygon.points)
+  bool outside_outer;    ///< else inside another hole
+};
+
+/// What SimplicityCheck::check found.
+struct Verdict {
+  /// The first vertex of an edge in a conflict: the smallest such edge where the runs or the
+  /// few-edges strategies decide, else as find_violation gives it.
+  std::optional<std::uint32_t> violation;
+  /// Whether two edges that are not neighbours share an endpoint position (rings touching at
+  /// vertices): the engine then relinks the passes through such points (TouchingPoints).
+  /// Known exactly when there is no violation (a ring folding back on itself may hide a
+  /// touching pair) for few edges, from the runs, and from the grid where it tested every
+  /// pair; unknown from the sweep.
+  enum class Touching : std::uint8_t { no, yes, unknown } touching = Touching::unknown;
+  /// For few edges that neither conflict nor touch, with holes: the first hole not inside the
+  /// outer ring or inside another hole (find_misplaced_hole_among_few). Not asked otherwise:
+  /// the engine names such a hole when it cannot clip the polygon (find_misplaced_hole).
+  std::optional<MisplacedHole> misplaced;
+};
+
 /// The grid over the whole polygon, kept between calls for its buffers.
 struct RootGrid {
   GridFrame frame;
@@ -105,10 +128,12 @@ struct RootGrid {
   std::vector<std::uint32_t> chunk_counts;  ///< per chunk of edges and cell, for filling
 };
 
-/// Checks every pair of edges sharing a cell; offers the smallest edge of each conflict found.
-/// False when the root grid would hold too many entries (nothing was checked then).
+/// Checks every pair of edges sharing a cell; offers the smallest edge of each conflict found,
+/// and gives (`touching`, when no conflict is found) whether two vertices share a position:
+/// unknown where a cell was swept instead. False when the root grid would hold too many
+/// entries (nothing was checked then).
 bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunContext& ctx,
-                   RootGrid& root, SmallestViolation& found);
+                   RootGrid& root, SmallestViolation& found, Verdict::Touching* touching = nullptr);
 /// Shamos-Hoey on a subset of the edges: a conflict among them (its smaller edge), if any.
 std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
                                          std::span<const std::uint32_t> subset);
@@ -123,12 +148,6 @@ void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContex
 TJunctionSearch find_t_junctions_in_slabs(const RingEdges& edges, std::uint32_t slabs,
                                           const RunContext& ctx);
 
-/// A hole that lies outside the outer ring, or inside another hole.
-struct MisplacedHole {
-  std::uint32_t vertex;  ///< a vertex of the hole no other ring shares (into polygon.points)
-  bool outside_outer;    ///< else inside another hole
-};
-
 /// For rings whose edges do not conflict (they meet only at shared vertices): the first hole,
 /// in ring order, that is not inside the outer ring or is inside another hole. Exact; near
 /// linear for real data (a ray per hole through horizontal bands of the edges). For polygons
@@ -138,22 +157,6 @@ std::optional<MisplacedHole> find_misplaced_hole(const CleanPolygon& polygon);
 /// (the check found none touching): a ray from each hole's first vertex against every edge of
 /// the other rings, nothing to set up. For few edges: holes times vertices tests.
 std::optional<MisplacedHole> find_misplaced_hole_among_few(const CleanPolygon& polygon);
-
-/// What SimplicityCheck::check found.
-struct Verdict {
-  /// The first vertex of an edge in a conflict: the smallest such edge where the runs or the
-  /// few-edges strategies decide, else as find_violation gives it.
-  std::optional<std::uint32_t> violation;
-  /// Whether two edges that are not neighbours share an endpoint position (rings touching at
-  /// vertices): the engine then relinks the passes through such points (TouchingPoints).
-  /// Known exactly for few edges when there is no violation (a ring folding back on itself
-  /// may hide a touching pair); unknown from the grid and the sweep.
-  enum class Touching : std::uint8_t { no, yes, unknown } touching = Touching::unknown;
-  /// For few edges that neither conflict nor touch, with holes: the first hole not inside the
-  /// outer ring or inside another hole (find_misplaced_hole_among_few). Not asked otherwise:
-  /// the engine names such a hole when it cannot clip the polygon (find_misplaced_hole).
-  std::optional<MisplacedHole> misplaced;
-};
 
 /// How often the rings turn back in x: about the number of runs of edges monotone in x (n over
 /// 1.5-2.3 on fractals, stars and grids of holes, 5-15 on coastlines, a few on combs and spirals).

@@ -1,7 +1,9 @@
 // The adaptive grid of SimplicityCheck. Every pair of edges that share a point has boxes that
 // share that point, and cells are found by monotone functions of the coordinates, so both
 // edges land in the cell holding the lower-left corner of their boxes' intersection: testing
-// each pair there (and nowhere else) tests every pair that could conflict, exactly once.
+// each pair there (and nowhere else) tests every pair that could conflict, exactly once. Among
+// them, for two vertices at one position, the two edges that start there: so the same pass
+// says whether a position repeats (unless a cell was swept instead).
 #include <algorithm>
 
 #include "simplicity.hpp"
@@ -72,6 +74,12 @@ class CellSearch {
     levels_[0].frame = root;
   }
 
+  /// What the cells searched so far say of repeated positions.
+  Verdict::Touching touching() const {
+    using enum Verdict::Touching;
+    return repeated_ ? yes : swept_ ? unknown : no;
+  }
+
   void check_root_cell(std::size_t cell, std::span<const std::uint32_t> list) {
     levels_[0].column = static_cast<int>(cell % levels_[0].frame.nx);
     levels_[0].row = static_cast<int>(cell / levels_[0].frame.nx);
@@ -96,6 +104,7 @@ class CellSearch {
     }
     if (list.size() <= limits_.all_pairs_edges || !limits_.allow_sweep)
       return test_pairs(depth, list);
+    swept_ = true;  // the sweep does not say whether edges share an end
     if (const auto violation = sweep_edges(edges_, list)) found_.offer(*violation);
   }
 
@@ -153,6 +162,7 @@ class CellSearch {
 
   void test_pairs(std::uint32_t depth, std::span<const std::uint32_t> list) {
     const auto& boxes = edges_.boxes;
+    const Point* pts = edges_.points->data();
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::uint32_t e = list[i];
       if (e >= found_.get()) return;  // no pair from here on can name a smaller edge
@@ -161,6 +171,9 @@ class CellSearch {
         const EdgeBox& t = boxes[list[j]];
         if (s.x1 < t.x0 || t.x1 < s.x0 || s.y1 < t.y0 || t.y1 < s.y0) continue;
         if (!owns(std::max(s.x0, t.x0), std::max(s.y0, t.y0), depth)) continue;
+        // Edges start where they are numbered; cleaning left no point equal to the next, so
+        // two edges starting at one position are never neighbours.
+        repeated_ |= pts[e] == pts[list[j]];
         if (edges_.conflict(e, list[j])) {
           found_.offer(e);
           return;
@@ -173,7 +186,9 @@ class CellSearch {
   const GridLimits& limits_;
   SmallestViolation& found_;
   std::vector<Level> levels_;
-  std::size_t budget_;  ///< entries this task may still put into finer grids
+  std::size_t budget_;     ///< entries this task may still put into finer grids
+  bool repeated_ = false;  ///< two edges tested start at one position
+  bool swept_ = false;     ///< a cell was swept, not tested pair by pair
 };
 
 /// Root cells cut into runs of about equal entries: the tasks. Depends on counts only.
@@ -262,7 +277,7 @@ bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunConte
 }  // namespace
 
 bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunContext& ctx,
-                   RootGrid& root, SmallestViolation& found) {
+                   RootGrid& root, SmallestViolation& found, Verdict::Touching* touching) {
   const std::uint32_t n = edges.size();
   const Point lo{edges.bounds.x0, edges.bounds.y0}, hi{edges.bounds.x1, edges.bounds.y1};
   // About two edges a cell over the bounding box, whatever the edges' lengths: where edges
@@ -270,6 +285,7 @@ bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunCo
   root.frame.fit(lo, hi, std::size_t{n} / 2 + 1);
   if (!bucket_root(edges, limits.root_entries_per_edge, ctx, root)) return false;
   const std::vector<std::size_t> cuts = task_cuts(root.cell_start);
+  std::vector<Verdict::Touching> seen(cuts.size() - 1);
   ctx.run_tasks("check simplicity: cells", cuts.size() - 1, [&](std::size_t task) {
     const std::size_t first = cuts[task], last = cuts[task + 1];
     const std::size_t entries = root.cell_start[last] - root.cell_start[first];
@@ -278,7 +294,15 @@ bool check_on_grid(const RingEdges& edges, const GridLimits& limits, const RunCo
       search.check_root_cell(
           c, std::span(root.items)
                  .subspan(root.cell_start[c], root.cell_start[c + 1] - root.cell_start[c]));
+    seen[task] = search.touching();
   });
+  if (touching) {  // a repeat seen anywhere is one; else unknown where any task swept
+    using enum Verdict::Touching;
+    const auto has = [&](Verdict::Touching t) {
+      return std::find(seen.begin(), seen.end(), t) != seen.end();
+    };
+    *touching = has(yes) ? yes : has(unknown) ? unknown : no;
+  }
   return true;
 }
 

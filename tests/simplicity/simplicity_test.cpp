@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 #include <numeric>
 #include <random>
@@ -308,6 +309,72 @@ TEST(Simplicity, SyntheticFamiliesAreSimpleByEveryMethod) {
   }
 }
 
+/// Small triangles as holes in a Koch outline, each in the wedge of the outline's vertex k: from
+/// that vertex itself (`touching`: the rings share a position) or from a little inside it.
+Polygon koch_with_wedge_holes(std::size_t vertices, int seed, bool touching) {
+  Polygon polygon = generate_polygon("koch", vertices, seed);
+  const Ring outline = polygon[0];
+  const std::size_t n = outline.size();
+  for (std::size_t k = 0; k < n; k += n / 7) {
+    const Point a = outline[(k + n - 1) % n], p = outline[k], c = outline[(k + 1) % n];
+    const auto unit = [](Point v) {
+      const double length = std::hypot(v.x, v.y);
+      return Point{v.x / length, v.y / length};
+    };
+    const Point u = unit({a.x - p.x, a.y - p.y}), w = unit({c.x - p.x, c.y - p.y});
+    // The bisector of the corner, turned inward where the corner is reflex (the outline is
+    // counterclockwise or clockwise as generated: the sign of the area says which).
+    const double side = orient2d(a, p, c) > 0 ? 1 : -1;
+    double area = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      area += outline[i].x * outline[(i + 1) % n].y - outline[(i + 1) % n].x * outline[i].y;
+    const Point d =
+        unit({side * (area > 0 ? 1 : -1) * (u.x + w.x), side * (area > 0 ? 1 : -1) * (u.y + w.y)});
+    const double r = 0.2 * std::hypot(c.x - p.x, c.y - p.y);
+    const Point from = touching ? p : Point{p.x + 0.05 * r * d.x, p.y + 0.05 * r * d.y};
+    const double turn = 0.15;  // radians either side of the bisector: inside a 60-degree tip
+    const auto at = [&](double angle) {
+      return Point{from.x + r * (d.x * std::cos(angle) - d.y * std::sin(angle)),
+                   from.y + r * (d.x * std::sin(angle) + d.y * std::cos(angle))};
+    };
+    polygon.push_back({from, at(turn), at(-turn)});
+  }
+  return polygon;
+}
+
+/// Past chains_limit, on an outline the runs leave to the grid, the grid's pairs say whether a
+/// position repeats, as every pair of edges does (before, the engine hashed every position
+/// again): holes that touch the outline and holes that do not, at every thread count.
+TEST(Simplicity, GridSaysWhetherRingsTouch) {
+  const Contexts contexts;
+  SimplicityCheck check;
+  int touching = 0, apart = 0;
+  for (int seed = 0; seed < 6; ++seed) {
+    for (bool touches : {false, true}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + (touches ? ", touching" : ", apart"));
+      const CleanPolygon polygon = cleaned(koch_with_wedge_holes(3000, seed, touches));
+      const Reference reference(polygon);
+      ASSERT_FALSE(reference.smallest_violation()) << "the holes were meant to fit";
+      ASSERT_EQ(reference.touching(), touches);
+      for (const RunContext& ctx : contexts.list) {
+        RunProfile profile;
+        RunContext profiled = ctx;
+        profiled.profile = &profile;
+        const Verdict verdict = check.check(polygon, profiled, true);
+        EXPECT_FALSE(verdict.violation);
+        EXPECT_EQ(verdict.touching, touches ? Verdict::Touching::yes : Verdict::Touching::no);
+        const bool on_grid =
+            std::any_of(profile.phases.begin(), profile.phases.end(),
+                        [](const auto& phase) { return phase.name == "check simplicity: cells"; });
+        EXPECT_TRUE(on_grid) << "the grid decided";
+      }
+      ++(touches ? touching : apart);
+    }
+  }
+  EXPECT_EQ(touching, 6);
+  EXPECT_EQ(apart, 6);
+}
+
 /// Large enough for many parallel tasks and finer grids; a few vertices moved so that edges
 /// cross far apart in the index order (the smallest must win whichever task finds it).
 TEST(Simplicity, PerturbedLargePolygonsGiveTheSameAnswerAtEveryThreadCount) {
@@ -502,7 +569,7 @@ TEST(Simplicity, RunsDecideInPartsWhereTheGridWouldGiveUp) {
     if (crossed) {
       EXPECT_TRUE(check.unresolvable_conflict_at(clean, *verdict.violation, RunContext{}));
     } else {
-      EXPECT_EQ(verdict.touching, Verdict::Touching::no);  // the runs know; the grid would not
+      EXPECT_EQ(verdict.touching, Verdict::Touching::no);  // the runs know
     }
     std::vector<std::string> phases;
     for (const auto& phase : profile.phases) phases.push_back(phase.name);
