@@ -4,64 +4,63 @@
 // exactly falls back to the sequential engine on the whole boundary, which is never modified
 // before that point.
 #include <algorithm>
+#include <span>
 
 #include "divide_conquer_fans.hpp"
 #include "divide_conquer_repair.hpp"
 #include "split_pieces.hpp"
+#include "variant_scratch.hpp"
 #include "variants.hpp"
 
 namespace pear::detail {
 namespace {
 
-/// The pieces between two neighbouring split lines, lines [lo, hi) still to cut.
-struct Slab {
-  Pieces pieces;
-  std::uint32_t lo = 0, hi = 0;
-};
-
-/// What a part's clipping gives: triangles of input vertices only (already in caller indices),
-/// and the triangles at Steiner points, to be redone.
-struct PartResult {
-  TriangleList kept;
-  std::vector<SteinerTriangle> at_steiner;
-  std::vector<std::uint8_t> on_boundary;  ///< per triangle at Steiner points, see find_holes
-  bool ok = true;
-};
-
 /// Recursive halving (paper §2.1): the middle line first, then the middles of both halves, and
-/// so on; the slabs of one level are cut in parallel. Returns the slabs left to right.
-bool split_into_parts(const Boundary& b, std::vector<PieceCorner> cycle,
-                      std::vector<SplitLine>& lines, const RunContext& ctx,
-                      std::vector<Slab>& slabs) {
-  slabs.assign(1, Slab{});
-  slabs[0].pieces.corners = std::move(cycle);
-  slabs[0].pieces.close_piece();
-  slabs[0].hi = static_cast<std::uint32_t>(lines.size());
-  while (std::any_of(slabs.begin(), slabs.end(), [](const Slab& s) { return s.lo < s.hi; })) {
-    std::vector<std::size_t> first_child(slabs.size());
+/// so on; the slabs of one level are cut in parallel. Level 0 is the cycle, one slab; returns
+/// the slabs left to right (a prefix of the last level's array), empty when a cut failed.
+std::span<const DivideSlab> split_into_parts(const Boundary& b, std::vector<SplitLine>& lines,
+                                             const RunContext& ctx, VariantScratch& scratch) {
+  std::vector<std::vector<DivideSlab>>& levels = scratch.slab_levels;
+  DivideSlab& whole = levels[0][0];
+  whole.pieces.starts.assign(1, 0);
+  whole.pieces.close_piece();
+  whole.lo = 0, whole.hi = static_cast<std::uint32_t>(lines.size());
+  std::size_t level = 0, count = 1;
+  const auto uncut = [&] {
+    return std::any_of(levels[level].begin(),
+                       levels[level].begin() + static_cast<std::ptrdiff_t>(count),
+                       [](const DivideSlab& s) { return s.lo < s.hi; });
+  };
+  for (; uncut(); ++level) {
+    std::vector<std::size_t> first_child(count);
     std::size_t children = 0;
-    for (std::size_t s = 0; s < slabs.size(); ++s)
-      first_child[s] = std::exchange(children, children + (slabs[s].lo < slabs[s].hi ? 2 : 1));
-    std::vector<Slab> next(children);
-    std::vector<std::uint8_t> ok(slabs.size(), 1);
-    ctx.run_tasks("split", slabs.size(), [&](std::size_t s) {
-      Slab& slab = slabs[s];
+    for (std::size_t s = 0; s < count; ++s) {
+      const DivideSlab& slab = levels[level][s];
+      first_child[s] = std::exchange(children, children + (slab.lo < slab.hi ? 2 : 1));
+    }
+    if (levels.size() == level + 1) levels.emplace_back();
+    if (levels[level + 1].size() < children) levels[level + 1].resize(children);
+    std::vector<DivideSlab>& slabs = levels[level];
+    std::vector<DivideSlab>& next = levels[level + 1];
+    std::vector<std::uint8_t> ok(count, 1);
+    ctx.run_tasks("split", count, [&](std::size_t s) {
+      const DivideSlab& slab = slabs[s];
       if (slab.lo == slab.hi) {
-        next[first_child[s]] = std::move(slab);
+        next[first_child[s]] = slab;  // a copy into an array that keeps its size
         return;
       }
       const std::uint32_t mid = slab.lo + (slab.hi - slab.lo) / 2;
-      Slab& left = next[first_child[s]];
-      Slab& right = next[first_child[s] + 1];
+      DivideSlab& left = next[first_child[s]];
+      DivideSlab& right = next[first_child[s] + 1];
       left.lo = slab.lo, left.hi = mid, right.lo = mid + 1, right.hi = slab.hi;
+      for (Pieces* p : {&left.pieces, &right.pieces}) p->corners.clear(), p->starts.assign(1, 0);
       PieceSplitter splitter;
       ok[s] = splitter.split(b, lines, mid, slab.pieces, left.pieces, right.pieces);
-      slab.pieces = Pieces{};
     });
-    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
-    slabs = std::move(next);
+    if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return {};
+    count = children;
   }
-  return true;
+  return {levels[level].data(), count};
 }
 
 /// Which edges of a piece's triangle lie on the input boundary: those along a boundary edge of
@@ -83,10 +82,12 @@ std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners, s
 
 /// Clips every piece of a part with the sequential engine, on the rounded Steiner points.
 void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pieces& pieces,
-               EarHeuristic heuristic, CycleClipper& clipper, PartResult& result) {
-  Boundary piece;
-  FanReducer fans;
-  TriangleList local;
+               EarHeuristic heuristic, MakeClipper make_clipper, DividePart& part) {
+  part.kept.clear(), part.at_steiner.clear(), part.on_boundary.clear();
+  part.ok = true;
+  CycleClipper& clipper = part.clipper_from(make_clipper);
+  Boundary& piece = part.piece;
+  TriangleList& local = part.local;
   for (std::size_t p = 0; p < pieces.count(); ++p) {
     const PieceCorner* corners = &pieces.corners[pieces.starts[p]];
     const std::uint32_t count = pieces.starts[p + 1] - pieces.starts[p];
@@ -95,25 +96,25 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
     for (std::uint32_t i = 0; i < count; ++i) piece.link(i, i + 1 == count ? 0 : i + 1);
     local.clear();
     if (count < 3 || !clipper.clip(piece, 0, heuristic, local)) {
-      result.ok = false;
+      part.ok = false;
       return;
     }
-    fans.reduce(piece, corners, count, local);
+    part.fans.reduce(piece, corners, count, local);
     for (const auto& t : local) {
       const SteinerTriangle corner = {corners[t[0]], corners[t[1]], corners[t[2]]};
       if (is_steiner(corner[0]) || is_steiner(corner[1]) || is_steiner(corner[2])) {
-        result.at_steiner.push_back(corner);
-        result.on_boundary.push_back(boundary_edges(piece, corners, count, t));
+        part.at_steiner.push_back(corner);
+        part.on_boundary.push_back(boundary_edges(piece, corners, count, t));
         continue;
       }
       const std::uint32_t u = corner_index(corner[0]), v = corner_index(corner[1]),
                           w = corner_index(corner[2]);
       // Exact: a triangle of input vertices the rounding made flat or turned cannot stay.
       if (!(orient2d(b.pos[u], b.pos[v], b.pos[w]) > 0)) {
-        result.ok = false;
+        part.ok = false;
         return;
       }
-      result.kept.push_back({b.vertex[u], b.vertex[v], b.vertex[w]});
+      part.kept.push_back({b.vertex[u], b.vertex[v], b.vertex[w]});
     }
   }
 }
@@ -121,16 +122,16 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
 /// Redoes the triangles at Steiner points from input vertices: the search for the holes and
 /// the check in tasks where their passes allow, the holes spread over tasks.
 bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
-                           const std::vector<PartResult>& parts, EarHeuristic heuristic,
+                           const std::vector<DividePart*>& parts, EarHeuristic heuristic,
                            MakeClipper make_clipper, const RunContext& ctx,
                            std::vector<TriangleList>& patches) {
   std::vector<SteinerTriangle> at_steiner;
   std::vector<std::uint8_t> on_boundary;
   // One copy, not a phase of its own (profiled as time outside the phases): cheap beside the
   // search, and a phase's wrapper costs the .wasm.
-  for (const PartResult& part : parts) {
-    at_steiner.insert(at_steiner.end(), part.at_steiner.begin(), part.at_steiner.end());
-    on_boundary.insert(on_boundary.end(), part.on_boundary.begin(), part.on_boundary.end());
+  for (const DividePart* part : parts) {
+    at_steiner.insert(at_steiner.end(), part->at_steiner.begin(), part->at_steiner.end());
+    on_boundary.insert(on_boundary.end(), part->on_boundary.begin(), part->on_boundary.end());
   }
   SteinerRepair repair;
   if (!repair.find_holes(b, lines, at_steiner, std::move(on_boundary), ctx)) return false;
@@ -163,24 +164,26 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
 
 /// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.
 /// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
-bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
-                       std::vector<SplitLine>& lines, EarHeuristic heuristic,
+bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeuristic heuristic,
                        MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
-                       std::size_t& region_ordered) {
-  std::vector<Slab> slabs;
-  if (!split_into_parts(b, std::move(cycle), lines, ctx, slabs)) return false;
-  std::vector<PartResult> parts(slabs.size());
-  ctx.run_tasks("clip parts", slabs.size(), [&](std::size_t s) {
-    const std::unique_ptr<CycleClipper> clipper = make_clipper();
-    clip_part(b, lines, slabs[s].pieces, heuristic, *clipper, parts[s]);
+                       std::size_t& region_ordered, VariantScratch& scratch) {
+  const std::span<const DivideSlab> slabs = split_into_parts(b, lines, ctx, scratch);
+  const std::size_t count = slabs.size();
+  if (count == 0) return false;
+  std::vector<std::unique_ptr<DividePart>>& kept = scratch.divide_parts;
+  while (kept.size() < count) kept.push_back(std::make_unique<DividePart>());
+  std::vector<DividePart*> parts(count);
+  for (std::size_t s = 0; s < count; ++s) parts[s] = kept[s].get();
+  ctx.run_tasks("clip parts", count, [&](std::size_t s) {
+    clip_part(b, lines, slabs[s].pieces, heuristic, make_clipper, *parts[s]);
   });
-  if (std::any_of(parts.begin(), parts.end(), [](const PartResult& p) { return !p.ok; }))
+  if (std::any_of(parts.begin(), parts.end(), [](const DividePart* p) { return !p->ok; }))
     return false;
   std::vector<TriangleList> patches;
   if (!remove_steiner_points(b, lines, parts, heuristic, make_clipper, ctx, patches)) return false;
   // The parts' triangles, then the holes', each copied by its own task to its place in `out`.
   std::vector<const TriangleList*> lists;
-  for (const PartResult& part : parts) lists.push_back(&part.kept);
+  for (const DividePart* part : parts) lists.push_back(&part->kept);
   for (const TriangleList& patch : patches) lists.push_back(&patch);
   std::vector<std::size_t> offset(1, out.size());
   for (const TriangleList* list : lists) offset.push_back(offset.back() + list->size());
@@ -196,10 +199,14 @@ bool split_clip_repair(const Boundary& b, std::vector<PieceCorner> cycle,
 
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                         MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
-                        std::uint32_t& best_effort_vertex, std::size_t& region_ordered) {
-  std::vector<PieceCorner> cycle;
+                        std::uint32_t& best_effort_vertex, std::size_t& region_ordered,
+                        VariantScratchPtr& scratch) {
+  if (!scratch) scratch.reset(new VariantScratch);
+  if (scratch->slab_levels.empty()) scratch->slab_levels.emplace_back(1);
+  std::vector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
   std::vector<SplitLine> lines;
   ctx.run_serial("place split lines", [&] {
+    cycle.clear();
     cycle.reserve(b.size());
     std::uint32_t v = entry;
     do {
@@ -213,16 +220,17 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();
-    if (split_clip_repair(b, std::move(cycle), lines, heuristic, make_clipper, ctx, out,
-                          region_ordered))
+    if (split_clip_repair(b, lines, heuristic, make_clipper, ctx, out, region_ordered, *scratch))
       return true;
     out.resize(start);
     phase = "fall back to sequential";  // RunProfile shows how often this happens
   }
-  const std::unique_ptr<CycleClipper> clipper = make_clipper();
+  if (scratch->divide_parts.empty())
+    scratch->divide_parts.push_back(std::make_unique<DividePart>());
+  CycleClipper& clipper = scratch->divide_parts[0]->clipper_from(make_clipper);
   bool complete = true;
-  ctx.run_serial(phase, [&] { complete = clipper->clip(b, entry, heuristic, out); });
-  best_effort_vertex = clipper->best_effort_vertex();
+  ctx.run_serial(phase, [&] { complete = clipper.clip(b, entry, heuristic, out); });
+  best_effort_vertex = clipper.best_effort_vertex();
   return complete;
 }
 

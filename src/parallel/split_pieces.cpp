@@ -71,6 +71,7 @@ std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts) 
 std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner>& cycle,
                                 std::size_t stride, const std::vector<double>& after) {
   std::vector<double> low, high;
+  low.reserve(cycle.size() / stride + 1), high.reserve(cycle.size() / stride + 1);
   for (std::size_t i = 0; i < cycle.size(); i += stride) {
     const double x0 = b.pos[corner_index(cycle[i])].x;
     const double x1 = b.pos[corner_index(cycle[i + 1 == cycle.size() ? 0 : i + 1])].x;
@@ -101,6 +102,7 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   constexpr std::size_t sample_limit = std::size_t{1} << 14;
   const std::size_t stride = std::max<std::size_t>(1, cycle.size() / sample_limit);
   std::vector<double> xs;
+  xs.reserve(cycle.size() / stride + 1);  // no copies as it grows: up to 128 KB
   for (std::size_t i = 0; i < cycle.size(); i += stride)
     xs.push_back(b.pos[corner_index(cycle[i])].x);
   const std::size_t budget = max_steiner_points(cycle.size());

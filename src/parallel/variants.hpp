@@ -14,7 +14,7 @@ namespace pear::detail {
 
 inline constexpr std::uint32_t no_node = UINT32_MAX;
 
-/// Partition-and-cut's and mark-and-cut's arrays, kept between runs (variant_scratch.hpp);
+/// The parallel variants' arrays, kept between runs (variant_scratch.hpp);
 /// opaque here, so that the engine's header and destructor stay small.
 struct VariantScratch;
 struct VariantScratchDeleter {
@@ -51,10 +51,11 @@ using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>
 /// `make_clipper` (the sequential engine).
 /// `region_ordered`: set to the size of `out` after the parts' triangles (part after part, each
 /// a slab of the plane; the holes around the Steiner points come after), or left where it was
-/// when the sequential engine did it all.
+/// when the sequential engine did it all. `scratch`: made on first use (the parts' clippers
+/// among it), kept for the next run.
 [[gnu::noinline]] bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                                           MakeClipper make_clipper, const RunContext& ctx,
                                           TriangleList& out, std::uint32_t& best_effort_vertex,
-                                          std::size_t& region_ordered);
+                                          std::size_t& region_ordered, VariantScratchPtr& scratch);
 
 }  // namespace pear::detail

@@ -342,7 +342,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
     case Algorithm::divide_and_conquer:
       // Part after part, each a slab: runs of this order are the CDT's flip sets.
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
-                                best_effort_vertex, region_ordered_);
+                                best_effort_vertex, region_ordered_, variant_scratch_);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
                                shared_);

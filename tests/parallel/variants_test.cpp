@@ -185,9 +185,9 @@ TEST(Tricky, SelfIntersectingInputIsFlaggedAtEveryThreadCount) {
 
 TEST(Tricky, OneTriangulatorKeepsNothingBetweenRuns) {
   // Each engine keeps the variants' arrays between runs (src/parallel/variant_scratch.hpp):
-  // one Triangulator runs both variants over polygons of different sizes and partition counts
-  // (more chains than the run before, then fewer), and each run must give the same valid
-  // triangles as another engine with another history.
+  // one Triangulator runs the three variants over polygons of different sizes and partition
+  // counts (more chains and parts than the run before, then fewer), and each run must give the
+  // same valid triangles as another engine with another history.
   const Polygon polygons[] = {generate_polygon("random", 30000, 3),
                               generate_polygon("random-holes", 6000, 4), regular(3000, 0.5, 1),
                               generate_polygon("random", 30000, 5)};
@@ -195,7 +195,8 @@ TEST(Tricky, OneTriangulatorKeepsNothingBetweenRuns) {
   Triangulator reused;
   for (std::size_t i = 0; i < std::size(polygons); ++i)
     for (Algorithm algorithm :
-         {Algorithm::partition_and_cut, Algorithm::mark_and_cut, Algorithm::partition_and_cut}) {
+         {Algorithm::partition_and_cut, Algorithm::mark_and_cut, Algorithm::divide_and_conquer,
+          Algorithm::partition_and_cut, Algorithm::divide_and_conquer}) {
       SCOPED_TRACE(std::string(name_of(algorithm)) + " run " + std::to_string(i));
       const Options options{.algorithm = algorithm, .threads = 2, .partitions = partitions[i]};
       const auto expected = check_polygon(polygons[i], true, options);
