@@ -14,7 +14,7 @@ in parallel with the GIL released. GeoSeries and Dask: pear.geopandas. Reference
 docs/python.md.
 """
 from ._pear import (Diagnostic, QualityStatistics, ValidationReport, incircle, orient2d, quality,
-                    triangulate, triangulate_points, validate)
+                    release_cached_engines, triangulate, triangulate_points, validate)
 from ._many import BatchResult, triangulate_many
 from ._shapely import shapely_triangles
 from ._types import InvalidInputError, NotSimpleError, PearError, Status, WKBError
@@ -28,5 +28,6 @@ HEURISTICS = ("top", "fast")
 
 __all__ = ["ALGORITHMS", "BatchResult", "Diagnostic", "HEURISTICS", "InvalidInputError",
            "NotSimpleError", "PearError", "QualityStatistics", "Status", "ValidationReport",
-           "WKBError", "incircle", "orient2d", "quality", "shapely_triangles", "triangulate",
-           "triangulate_many", "triangulate_points", "validate"]
+           "WKBError", "incircle", "orient2d", "quality", "release_cached_engines",
+           "shapely_triangles", "triangulate", "triangulate_many", "triangulate_points",
+           "validate"]

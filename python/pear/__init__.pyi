@@ -12,6 +12,7 @@ from ._pear import ValidationReport as ValidationReport
 from ._pear import incircle as incircle
 from ._pear import orient2d as orient2d
 from ._pear import quality as quality
+from ._pear import release_cached_engines as release_cached_engines
 from ._pear import triangulate as triangulate
 from ._pear import triangulate_points as triangulate_points
 from ._pear import validate as validate

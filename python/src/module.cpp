@@ -17,6 +17,11 @@ namespace {
 /// releasing and taking the lock back costs more than another thread could gain.
 constexpr std::size_t release_gil_points = 256;
 
+/// Past this many points a call takes an engine from pear's pool (the one the pool keeps for
+/// large polygons) instead of the thread's Triangulator: no thread then holds a large
+/// polygon's arrays for good, and pear.release_cached_engines() frees them from any thread.
+constexpr std::size_t pooled_points = 65536;
+
 /// A thread's Triangulator (pear's reuse object: its engine holds every buffer of a run) with
 /// the ring offsets and the result it fills, kept between calls: a small polygon then costs no
 /// allocation but its result's array. The coordinates are read where they are.
@@ -34,9 +39,13 @@ Scratch& thread_scratch() {
 Triangulation<>& run(Scratch& s, const CoordinateView& view, const Options& options) {
   if (view.xy.size() < 2 * release_gil_points) {
     s.triangulator.triangulate_into(view, options, s.result);
-  } else {
+  } else if (view.xy.size() <= 2 * pooled_points) {
     py::gil_scoped_release release;
     s.triangulator.triangulate_into(view, options, s.result);
+  } else {
+    py::gil_scoped_release release;
+    Triangulator pooled;  // its engine goes back to the pool at the end of the call
+    pooled.triangulate_into(view, options, s.result);
   }
   return s.result;
 }
@@ -360,6 +369,12 @@ void bind_functions(py::module_& m) {
         "shapely 1.8 geometries read by GEOS (their _geom, in the libgeos_c shapely loaded) "
         "to read_wkb's arrays, or None: then write WKB.");
   m.attr("has_geos_reader") = has_geos_reader();
+  m.def(
+      "release_cached_engines", [] { release_cached_engines(); },
+      "release_cached_engines()\n--\n\n"
+      "Frees the arrays pear keeps for the next calls: the engine of the last polygon of more "
+      "than 65,536 points (about 300 bytes a point) and the small polygons' engines not in "
+      "use. Each thread keeps its own small engine (up to 65,536 points' worth) until it ends.");
   m.def("triangles_wkb", &triangles_wkb, py::arg("coords"), py::arg("triangles"),
         "triangles_wkb(coords, triangles)\n--\n\nEach triangle as WKB Polygon bytes.");
   m.def(

@@ -150,6 +150,27 @@ def test_not_simple_names_a_misplaced_hole_not_an_earlier_warning():
         many.check()
 
 
+def test_large_polygon_engine_is_released_and_taken_again():
+    # Past 65,536 points a call takes pear's pooled large engine (no thread keeps one);
+    # release_cached_engines frees it, and the next calls, here and in another thread, build
+    # a new one and give the same valid triangles.
+    n = 70_000
+    angles = np.linspace(0.0, 2.0 * np.pi, n, endpoint=False)
+    radius = 1.0 + 0.1 * np.sin(37.0 * angles)  # star-shaped about the origin: simple
+    coords = np.column_stack([radius * np.cos(angles), radius * np.sin(angles)])
+    first = pear.triangulate(coords, partitions=2)
+    assert first.shape == (n - 2, 3)
+    assert pear.validate(coords, first).valid
+    assert pear.release_cached_engines() is None
+    np.testing.assert_array_equal(pear.triangulate(coords, partitions=2), first)
+    pear.release_cached_engines()
+    found = {}
+    worker = threading.Thread(target=lambda: found.update(t=pear.triangulate(coords, partitions=2)))
+    worker.start()
+    worker.join()
+    np.testing.assert_array_equal(found["t"], first)
+
+
 def test_strict_false_returns_ok_with_the_triangles():
     triangles, status = pear.triangulate(SQUARE_WITH_HOLE, [4], strict=False)
     assert status is pear.Status.ok and len(triangles) == 8
