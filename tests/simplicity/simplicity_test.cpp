@@ -315,21 +315,21 @@ Polygon koch_with_wedge_holes(std::size_t vertices, int seed, bool touching) {
   Polygon polygon = generate_polygon("koch", vertices, seed);
   const Ring outline = polygon[0];
   const std::size_t n = outline.size();
+  const auto unit = [](Point v) {
+    const double length = std::hypot(v.x, v.y);
+    return Point{v.x / length, v.y / length};
+  };
+  // The outline is counterclockwise or clockwise as generated: the sign of its area says which.
+  double area = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    area += outline[i].x * outline[(i + 1) % n].y - outline[(i + 1) % n].x * outline[i].y;
+  const double counterclockwise = area > 0 ? 1 : -1;
   for (std::size_t k = 0; k < n; k += n / 7) {
     const Point a = outline[(k + n - 1) % n], p = outline[k], c = outline[(k + 1) % n];
-    const auto unit = [](Point v) {
-      const double length = std::hypot(v.x, v.y);
-      return Point{v.x / length, v.y / length};
-    };
     const Point u = unit({a.x - p.x, a.y - p.y}), w = unit({c.x - p.x, c.y - p.y});
-    // The bisector of the corner, turned inward where the corner is reflex (the outline is
-    // counterclockwise or clockwise as generated: the sign of the area says which).
-    const double side = orient2d(a, p, c) > 0 ? 1 : -1;
-    double area = 0;
-    for (std::size_t i = 0; i < n; ++i)
-      area += outline[i].x * outline[(i + 1) % n].y - outline[(i + 1) % n].x * outline[i].y;
-    const Point d =
-        unit({side * (area > 0 ? 1 : -1) * (u.x + w.x), side * (area > 0 ? 1 : -1) * (u.y + w.y)});
+    // The bisector of the corner, turned inward where the corner is reflex.
+    const double inward = (orient2d(a, p, c) > 0 ? 1 : -1) * counterclockwise;
+    const Point d = unit({inward * (u.x + w.x), inward * (u.y + w.y)});
     const double r = 0.2 * std::hypot(c.x - p.x, c.y - p.y);
     const Point from = touching ? p : Point{p.x + 0.05 * r * d.x, p.y + 0.05 * r * d.y};
     const double turn = 0.15;  // radians either side of the bisector: inside a 60-degree tip
