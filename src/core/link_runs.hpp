@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/boundary.hpp"
@@ -73,5 +74,50 @@ inline bool run_from(std::uint32_t head, const std::vector<std::uint32_t>& jumps
   run = {head, last - head + 1};
   return true;
 }
+
+/// The cycle through `entry` as runs of consecutive node numbers, in cycle order, from the
+/// links that jump (`jumps`, ascending). Empty when the links do not close into a cycle (the
+/// caller walks node by node then).
+inline std::vector<LinkRun> cycle_runs(const Boundary& b, std::uint32_t entry,
+                                       const std::vector<std::uint32_t>& jumps) {
+  const std::vector<std::uint32_t> heads = run_heads(b, jumps, entry);
+  std::vector<LinkRun> runs;
+  std::size_t nodes = 0;
+  std::uint32_t head = entry;
+  do {
+    LinkRun run;
+    if (!run_from(head, jumps, heads, run)) return {};
+    runs.push_back(run);
+    nodes += run.length;
+    if (nodes > b.size() || runs.size() > heads.size()) return {};
+    head = b.next[run.first + run.length - 1];
+  } while (head != entry);
+  return runs;
+}
+
+/// A cycle's runs (cycle_runs) with where each starts in the cycle: the node at any position
+/// is known without a walk, so tasks can fill the cycle's order part by part.
+struct CycleLayout {
+  std::vector<LinkRun> runs;
+  std::vector<std::size_t> start;  ///< each run's position in the cycle
+  std::size_t size = 0;            ///< the cycle's nodes
+
+  void assign(std::vector<LinkRun> cycle) {
+    runs = std::move(cycle);
+    start.clear();
+    size = 0;
+    for (const LinkRun& run : runs) start.push_back(std::exchange(size, size + run.length));
+  }
+  /// Calls visit(i, node) for the positions i in [from, to), in order.
+  template <class Visit>
+  void for_positions(std::size_t from, std::size_t to, Visit&& visit) const {
+    auto r = static_cast<std::size_t>(std::upper_bound(start.begin(), start.end(), from) -
+                                      start.begin() - 1);
+    for (std::size_t i = from; i < to; ++r) {
+      const std::size_t end = std::min(to, start[r] + runs[r].length);
+      for (; i < end; ++i) visit(i, static_cast<std::uint32_t>(runs[r].first + (i - start[r])));
+    }
+  }
+};
 
 }  // namespace pear::detail

@@ -6,6 +6,9 @@
 #include <algorithm>
 #include <span>
 
+#include "core/link_runs.hpp"
+#include "pear/config.hpp"
+
 #include "divide_conquer_fans.hpp"
 #include "divide_conquer_repair.hpp"
 #include "split_pieces.hpp"
@@ -124,6 +127,7 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
 bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
                            const std::vector<DividePart*>& parts, EarHeuristic heuristic,
                            MakeClipper make_clipper, const RunContext& ctx,
+                           std::unique_ptr<SteinerRepair>& kept,
                            std::vector<TriangleList>& patches) {
   std::vector<SteinerTriangle> at_steiner;
   std::vector<std::uint8_t> on_boundary;
@@ -133,7 +137,8 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
     at_steiner.insert(at_steiner.end(), part->at_steiner.begin(), part->at_steiner.end());
     on_boundary.insert(on_boundary.end(), part->on_boundary.begin(), part->on_boundary.end());
   }
-  SteinerRepair repair;
+  if (!kept) kept = std::make_unique<SteinerRepair>();
+  SteinerRepair& repair = *kept;
   if (!repair.find_holes(b, lines, at_steiner, std::move(on_boundary), ctx)) return false;
   const std::size_t holes = repair.hole_count();
   const std::size_t tasks = std::min<std::size_t>(std::max(1u, ctx.partitions), holes);
@@ -180,7 +185,9 @@ bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeur
   if (std::any_of(parts.begin(), parts.end(), [](const DividePart* p) { return !p->ok; }))
     return false;
   std::vector<TriangleList> patches;
-  if (!remove_steiner_points(b, lines, parts, heuristic, make_clipper, ctx, patches)) return false;
+  if (!remove_steiner_points(b, lines, parts, heuristic, make_clipper, ctx, scratch.steiner_repair,
+                             patches))
+    return false;
   // The parts' triangles, then the holes', each copied by its own task to its place in `out`.
   std::vector<const TriangleList*> lists;
   for (const DividePart* part : parts) lists.push_back(&part->kept);
@@ -195,6 +202,31 @@ bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeur
   return true;
 }
 
+/// The cycle through `entry` into `cycle` from its runs of consecutive nodes, found and copied
+/// in tasks (a polygon's rings before clipping are a few long runs: the walk node by node was
+/// a serial phase of every run in parts). False, `cycle` untouched, where that does not pay
+/// (one task, a build without threads, links that jump often): the caller walks.
+bool walk_cycle_in_parts(const Boundary& b, std::uint32_t entry, const RunContext& ctx,
+                         std::vector<PieceCorner>& cycle) {
+  const std::size_t parts = link_tasks(b.size(), ctx.partitions);
+  if (!PEAR_HAS_THREADS || parts < 2) return false;
+  std::vector<std::uint32_t> jumps;
+  if (!find_link_jumps(b, ctx, "cycle: jumps", parts, jumps, [](std::size_t, std::size_t) {}))
+    return false;
+  CycleLayout layout;
+  ctx.run_serial("cycle: runs", [&] {
+    layout.assign(cycle_runs(b, entry, jumps));
+    if (!layout.runs.empty()) cycle.resize(layout.size);
+  });
+  if (layout.runs.empty()) return false;
+  ctx.run_tasks("cycle: copy", parts, [&](std::size_t part) {
+    layout.for_positions(part_begin(cycle.size(), parts, part),
+                         part_begin(cycle.size(), parts, part + 1),
+                         [&](std::size_t i, std::uint32_t node) { cycle[i] = node; });
+  });
+  return true;
+}
+
 }  // namespace
 
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
@@ -205,18 +237,21 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
   if (scratch->slab_levels.empty()) scratch->slab_levels.emplace_back(1);
   std::vector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
   std::vector<SplitLine> lines;
-  ctx.run_serial("place split lines", [&] {
-    cycle.clear();
-    cycle.reserve(b.size());
-    std::uint32_t v = entry;
-    do {
-      cycle.push_back(v);
-      v = b.next[v];
-    } while (v != entry && cycle.size() <= b.size());
-    if (ctx.partitions < 2 || cycle.size() < 4 || cycle.size() > b.size()) return;
-    for (double after : split_positions(b, cycle, ctx.partitions))
+  const bool walked = walk_cycle_in_parts(b, entry, ctx, cycle);
+  if (!walked) {
+    ctx.run_serial("cycle: walk", [&] {
+      cycle.clear();
+      cycle.reserve(b.size());
+      std::uint32_t v = entry;
+      do {
+        cycle.push_back(v);
+        v = b.next[v];
+      } while (v != entry && cycle.size() <= b.size());
+    });
+  }
+  if (ctx.partitions >= 2 && cycle.size() >= 4 && cycle.size() <= b.size())
+    for (double after : split_positions(b, cycle, ctx.partitions, ctx))
       lines.emplace_back().after = after;
-  });
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();

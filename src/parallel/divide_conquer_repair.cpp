@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/sort_in_parts.hpp"
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
 #include "shared_boundary.hpp"  // part_begin
@@ -21,20 +22,9 @@ struct Groups {
   void unite(std::uint32_t a, std::uint32_t b) { parent[root(a)] = root(b); }
 };
 
-/// What makes two corners the same point: an input node by its position, a Steiner point by its
-/// line and the ends of its input edge (so both sides of a bridge give one point).
-struct CornerKey {
-  std::uint32_t line = 0;  ///< 0 for an input node, else the Steiner point's line + 1
-  Point a{}, b{};
-  friend bool operator<(const CornerKey& p, const CornerKey& q) {
-    if (p.line != q.line) return p.line < q.line;
-    if (p.a != q.a) return lexicographic_less(p.a, q.a);
-    return lexicographic_less(p.b, q.b);
-  }
-  friend bool operator==(const CornerKey&, const CornerKey&) = default;
-};
-
-CornerKey key_of(const Boundary& b, const std::vector<SplitLine>& lines, PieceCorner c) {
+SteinerRepair::CornerKey key_of(const Boundary& b, const std::vector<SplitLine>& lines,
+                                PieceCorner c) {
+  using CornerKey = SteinerRepair::CornerKey;
   if (!is_steiner(c)) return {0, b.pos[corner_index(c)], {}};
   const SteinerPoint& s = lines[corner_line(c)].steiner[corner_index(c)];
   const Point& p = b.pos[s.from];
@@ -70,27 +60,44 @@ void SteinerRepair::canonicalize(const std::vector<SteinerTriangle>& triangles, 
 }
 
 /// canonical_: every corner of the triangles and of the Steiner points' edges, with the first
-/// corner at its point.
+/// corner at its point. The sorts in tasks of ctx (phases "find Steiner holes: ...").
 void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<SplitLine>& lines,
-                                      const std::vector<SteinerTriangle>& triangles) {
-  std::vector<PieceCorner> corners = all_steiner_points(lines);
-  for (std::size_t i = 0, steiner = corners.size(); i < steiner; ++i) {
-    const SteinerPoint& s = lines[corner_line(corners[i])].steiner[corner_index(corners[i])];
-    corners.push_back(s.from);
-    corners.push_back(s.to);
-  }
-  for (const SteinerTriangle& t : triangles) corners.insert(corners.end(), t.begin(), t.end());
-  detail::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  std::vector<std::pair<CornerKey, PieceCorner>> keyed;
-  for (PieceCorner c : corners) keyed.push_back({key_of(b, lines, c), c});
-  detail::sort(keyed.begin(), keyed.end());
-  canonical_.clear();
-  for (std::size_t i = 0, first = 0; i < keyed.size(); ++i) {
-    if (keyed[i].first != keyed[first].first) first = i;
-    canonical_.push_back({keyed[i].second, keyed[first].second});
-  }
-  detail::sort(canonical_.begin(), canonical_.end());
+                                      const std::vector<SteinerTriangle>& triangles,
+                                      const RunContext& ctx) {
+  std::vector<PieceCorner>& corners = corners_;
+  ctx.run_serial("find Steiner holes: corners", [&] {
+    corners = all_steiner_points(lines);
+    for (std::size_t i = 0, steiner = corners.size(); i < steiner; ++i) {
+      const SteinerPoint& s = lines[corner_line(corners[i])].steiner[corner_index(corners[i])];
+      corners.push_back(s.from);
+      corners.push_back(s.to);
+    }
+    for (const SteinerTriangle& t : triangles) corners.insert(corners.end(), t.begin(), t.end());
+  });
+  sort_in_parts(ctx, "find Steiner holes: sort corners", "find Steiner holes: merge corners",
+                corners, std::less<>{});
+  std::vector<std::pair<CornerKey, PieceCorner>>& keyed = keyed_;
+  ctx.run_serial("find Steiner holes: unique", [&] {
+    corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
+    keyed.resize(corners.size());
+  });
+  const std::size_t key_tasks = repair_tasks(corners.size(), ctx);
+  ctx.run_tasks("find Steiner holes: keys", key_tasks, [&](std::size_t task) {
+    const std::size_t end = part_begin(corners.size(), key_tasks, task + 1);
+    for (std::size_t i = part_begin(corners.size(), key_tasks, task); i < end; ++i)
+      keyed[i] = {key_of(b, lines, corners[i]), corners[i]};
+  });
+  sort_in_parts(ctx, "find Steiner holes: sort keys", "find Steiner holes: merge keys", keyed,
+                std::less<>{});
+  ctx.run_serial("find Steiner holes: group", [&] {
+    canonical_.resize(keyed.size());
+    for (std::size_t i = 0, first = 0; i < keyed.size(); ++i) {
+      if (keyed[i].first != keyed[first].first) first = i;
+      canonical_[i] = {keyed[i].second, keyed[first].second};
+    }
+  });
+  sort_in_parts(ctx, "find Steiner holes: sort canonical", "find Steiner holes: merge canonical",
+                canonical_, std::less<>{});
 }
 
 PieceCorner SteinerRepair::canonical(PieceCorner c) const {
@@ -170,20 +177,26 @@ bool SteinerRepair::holes_are_disks(const std::vector<std::uint32_t>& hole_start
   return true;
 }
 
-/// edges_, sorted, and across_ sized for glue(); false when a directed edge repeats (the
-/// triangles overlap).
-bool SteinerRepair::index_edges() {
-  edges_.clear();
-  for (std::uint32_t t = 0; t < triangles_.size(); ++t)
-    for (std::uint32_t c = 0; c < 3; ++c)
-      edges_.push_back({triangles_[t][c], triangles_[t][(c + 1) % 3], 3 * t + c});
-  detail::sort(edges_.begin(), edges_.end(), [](const DirectedEdge& p, const DirectedEdge& q) {
-    return p.from < q.from || (p.from == q.from && p.to < q.to);
+/// edges_, sorted (in tasks of ctx), and across_ sized for glue(); false when a directed edge
+/// repeats (the triangles overlap).
+bool SteinerRepair::index_edges(const RunContext& ctx) {
+  ctx.run_serial("find Steiner holes: edges", [&] {
+    edges_.resize(3 * triangles_.size());
+    for (std::uint32_t t = 0; t < triangles_.size(); ++t)
+      for (std::uint32_t c = 0; c < 3; ++c)
+        edges_[3 * t + c] = {triangles_[t][c], triangles_[t][(c + 1) % 3], 3 * t + c};
   });
-  for (std::size_t i = 1; i < edges_.size(); ++i)
-    if (edges_[i].from == edges_[i - 1].from && edges_[i].to == edges_[i - 1].to) return false;
-  across_.resize(edges_.size());
-  return true;
+  sort_in_parts(ctx, "find Steiner holes: sort edges", "find Steiner holes: merge edges", edges_,
+                [](const DirectedEdge& p, const DirectedEdge& q) {
+                  return p.from < q.from || (p.from == q.from && p.to < q.to);
+                });
+  bool repeats = false;
+  ctx.run_serial("find Steiner holes: repeats", [&] {
+    for (std::size_t i = 1; i < edges_.size() && !repeats; ++i)
+      repeats = edges_[i].from == edges_[i - 1].from && edges_[i].to == edges_[i - 1].to;
+    across_.resize(edges_.size());
+  });
+  return !repeats;
 }
 
 /// across_ [from, to).
@@ -213,21 +226,21 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
   bool found = false;
   if (!PEAR_HAS_THREADS) {  // one phase: a build without threads keeps no task passes (.wasm)
     ctx.run_serial("find Steiner holes", [&] {
-      canonical_corners(b, lines, input);
+      const RunContext here;  // unprofiled: the phase is this one
+      canonical_corners(b, lines, input, here);
       canonicalize(input, 0, input.size());
-      found = index_edges() && (glue(0, edges_.size()), walk_holes());
+      found = index_edges(here) && (glue(0, edges_.size()), walk_holes());
     });
     return found;
   }
-  // The passes over every triangle and edge in tasks; the sorts and the walks stay serial.
-  ctx.run_serial("find Steiner holes: corners", [&] { canonical_corners(b, lines, input); });
+  // The passes over every triangle and edge and the sorts in tasks; the walks stay serial.
+  canonical_corners(b, lines, input, ctx);
   const std::size_t tasks = repair_tasks(input.size(), ctx);
   ctx.run_tasks("find Steiner holes: canonical", tasks, [&](std::size_t task) {
     canonicalize(input, part_begin(input.size(), tasks, task),
                  part_begin(input.size(), tasks, task + 1));
   });
-  ctx.run_serial("find Steiner holes: edges", [&] { found = index_edges(); });
-  if (!found) return false;
+  if (!index_edges(ctx)) return false;
   const std::size_t edge_tasks = repair_tasks(edges_.size(), ctx);
   ctx.run_tasks("find Steiner holes: glue", edge_tasks, [&](std::size_t task) {
     glue(part_begin(edges_.size(), edge_tasks, task),

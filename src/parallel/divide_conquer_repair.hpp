@@ -72,6 +72,19 @@ class SteinerRepair {
                    const std::vector<std::vector<SteinerTriangle>>& fills,
                    const RunContext& ctx) const;
 
+  /// What makes two corners the same point: an input node by its position, a Steiner point by
+  /// its line and the ends of its input edge (so both sides of a bridge give one point).
+  struct CornerKey {
+    std::uint32_t line = 0;  ///< 0 for an input node, else the Steiner point's line + 1
+    Point a{}, b{};
+    friend bool operator<(const CornerKey& p, const CornerKey& q) {
+      if (p.line != q.line) return p.line < q.line;
+      if (p.a != q.a) return lexicographic_less(p.a, q.a);
+      return lexicographic_less(p.b, q.b);
+    }
+    friend bool operator==(const CornerKey&, const CornerKey&) = default;
+  };
+
  private:
   struct DirectedEdge {
     PieceCorner from, to;
@@ -79,10 +92,10 @@ class SteinerRepair {
   };
   static constexpr std::uint32_t none = UINT32_MAX;
   void canonical_corners(const Boundary& b, const std::vector<SplitLine>& lines,
-                         const std::vector<SteinerTriangle>& triangles);
+                         const std::vector<SteinerTriangle>& triangles, const RunContext& ctx);
   void canonicalize(const std::vector<SteinerTriangle>& triangles, std::size_t from,
                     std::size_t to);
-  bool index_edges();
+  bool index_edges(const RunContext& ctx);
   void glue(std::size_t from, std::size_t to);
   bool walk_holes();
   PieceCorner canonical(PieceCorner c) const;
@@ -95,6 +108,9 @@ class SteinerRepair {
   void add_split_edges(const Boundary& b, const std::vector<SplitLine>& lines,
                        std::vector<ChainUse>& uses) const;
 
+  // canonical_corners' arrays, kept between runs (their pages were a third of its time).
+  std::vector<PieceCorner> corners_;
+  std::vector<std::pair<CornerKey, PieceCorner>> keyed_;
   std::vector<std::pair<PieceCorner, PieceCorner>> canonical_;  ///< sorted by corner
   std::vector<SteinerTriangle> triangles_;                      ///< in canonical corners
   std::vector<std::uint8_t> on_boundary_;

@@ -1,7 +1,6 @@
 #include "shared_boundary.hpp"
 
 #include <algorithm>
-#include <utility>
 
 #include "core/link_runs.hpp"
 #include "core/pinches.hpp"
@@ -11,30 +10,6 @@
 namespace pear::detail {
 
 #if PEAR_HAS_THREADS
-namespace {
-
-/// The cycle through `entry` as runs of consecutive node numbers, in cycle order, from the
-/// links that jump (`jumps`, ascending). Empty when the links do not close into a cycle (the
-/// caller walks node by node then).
-std::vector<LinkRun> cycle_runs(const Boundary& b, std::uint32_t entry,
-                                const std::vector<std::uint32_t>& jumps) {
-  const std::vector<std::uint32_t> heads = run_heads(b, jumps, entry);
-  std::vector<LinkRun> runs;
-  std::size_t nodes = 0;
-  std::uint32_t head = entry;
-  do {
-    LinkRun run;
-    if (!run_from(head, jumps, heads, run)) return {};
-    runs.push_back(run);
-    nodes += run.length;
-    if (nodes > b.size() || runs.size() > heads.size()) return {};
-    head = b.next[run.first + run.length - 1];
-  } while (head != entry);
-  return runs;
-}
-
-}  // namespace
-
 void SharedBoundary::walk_cycle(std::uint32_t entry, const RunContext& ctx) {
   const std::size_t size = b->size();
   const std::size_t parts = link_tasks(size, ctx.partitions);
@@ -53,30 +28,20 @@ void SharedBoundary::walk_cycle(std::uint32_t entry, const RunContext& ctx) {
         std::fill(owner.begin() + first, owner.begin() + last, landmark);
         std::fill(stamp.begin() + first, stamp.begin() + last, 0);
       });
-  std::vector<LinkRun> runs;
-  std::vector<std::size_t> run_at;  // where each run starts in `order`
+  CycleLayout layout;
   ctx.run_serial("classify: walk", [&] {
-    if (few) runs = cycle_runs(*b, entry, jumps);
-    if (runs.empty()) return walk_node_by_node(entry);  // many jumps
-    std::size_t at = 0;
-    for (const LinkRun& run : runs) run_at.push_back(std::exchange(at, at + run.length));
-    order.resize(at);
+    if (few) layout.assign(cycle_runs(*b, entry, jumps));
+    if (layout.runs.empty()) return walk_node_by_node(entry);  // many jumps
+    order.resize(layout.size);
   });
-  if (!runs.empty()) {
+  if (!layout.runs.empty()) {
     ctx.run_tasks("classify: order", parts, [&](std::size_t part) {
-      // This part's share of `order`, from inside whichever run it starts in.
-      const std::size_t from = part_begin(order.size(), parts, part);
-      const std::size_t to = part_begin(order.size(), parts, part + 1);
-      auto r = static_cast<std::size_t>(std::upper_bound(run_at.begin(), run_at.end(), from) -
-                                        run_at.begin() - 1);
-      for (std::size_t i = from; i < to; ++r) {
-        const std::size_t end = std::min(to, run_at[r] + runs[r].length);
-        for (; i < end; ++i) {
-          const auto node = static_cast<std::uint32_t>(runs[r].first + (i - run_at[r]));
-          order[i] = node;
-          alive[node] = 1;
-        }
-      }
+      layout.for_positions(part_begin(order.size(), parts, part),
+                           part_begin(order.size(), parts, part + 1),
+                           [&](std::size_t i, std::uint32_t node) {
+                             order[i] = node;
+                             alive[node] = 1;
+                           });
     });
   }
 }

@@ -4,7 +4,9 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/sort_in_parts.hpp"
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 namespace {
@@ -44,13 +46,14 @@ void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) 
 constexpr std::size_t few_lines = 16;
 
 /// Quantiles of the sample: the ceil(i * n / parts)-th smallest x, without repeats. Reorders
-/// xs: for a few lines each rank is selected above the last (nth_element), else xs is sorted.
-std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts) {
+/// xs unless `sorted` says it is: for a few lines each rank is selected above the last
+/// (nth_element), else xs is sorted.
+std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts, bool sorted) {
   std::vector<double> after;
   if (xs.empty()) return after;
-  const bool select = parts - 1 <= few_lines;
-  if (!select) detail::sort(xs.begin(), xs.end());
-  const double largest = *std::max_element(xs.begin(), xs.end());
+  const bool select = !sorted && parts - 1 <= few_lines;
+  if (!select && !sorted) detail::sort(xs.begin(), xs.end());
+  const double largest = sorted ? xs.back() : *std::max_element(xs.begin(), xs.end());
   std::size_t selected = 0;  // xs[0, selected) hold the smallest values, in no order
   for (std::size_t i = 1; i < parts; ++i) {
     const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
@@ -65,50 +68,83 @@ std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts) 
   return after;
 }
 
-/// The crossings of every stride-th edge of the cycle with lines placed right after each x of
-/// `after` (increasing), times the stride: an edge crosses such a line when its x range holds
-/// the x and reaches past it.
-std::size_t estimated_crossings(const Boundary& b, const std::vector<PieceCorner>& cycle,
-                                std::size_t stride, const std::vector<double>& after) {
-  std::vector<double> low, high;
-  low.reserve(cycle.size() / stride + 1), high.reserve(cycle.size() / stride + 1);
-  for (std::size_t i = 0; i < cycle.size(); i += stride) {
-    const double x0 = b.pos[corner_index(cycle[i])].x;
-    const double x1 = b.pos[corner_index(cycle[i + 1 == cycle.size() ? 0 : i + 1])].x;
-    low.push_back(std::min(x0, x1));
-    high.push_back(std::max(x0, x1));
+/// Every stride-th corner's x, and the x range of the edge from it.
+struct CycleSample {
+  std::vector<double> xs, low, high;
+  std::size_t stride = 1;
+  bool ranges_sorted = false;
+};
+
+/// The crossings of the sample's edges with lines placed right after each x of `after`
+/// (increasing), times the stride: an edge crosses such a line when its x range holds the x and
+/// reaches past it. Up to few_lines lines counted in `tasks` tasks of ctx.
+std::size_t estimated_crossings(CycleSample& sample, const std::vector<double>& after,
+                                std::size_t tasks, const RunContext& ctx) {
+  const std::vector<double>&low = sample.low, &high = sample.high;
+  if (after.size() <= few_lines) {
+    std::vector<std::size_t> counts(tasks, 0);
+    ctx.run_tasks("split lines: crossings", tasks, [&](std::size_t t) {
+      std::size_t crossings = 0;
+      const std::size_t end = low.size() * (t + 1) / tasks;
+      for (std::size_t e = low.size() * t / tasks; e < end; ++e)
+        for (double v : after) crossings += (low[e] <= v) & (v < high[e]);
+      counts[t] = crossings;
+    });
+    return std::accumulate(counts.begin(), counts.end(), std::size_t{0}) * sample.stride;
   }
   std::size_t crossings = 0;
-  if (after.size() <= few_lines) {
-    for (std::size_t e = 0; e < low.size(); ++e)
-      for (double v : after) crossings += (low[e] <= v) & (v < high[e]);
-    return crossings * stride;
-  }
-  detail::sort(low.begin(), low.end());
-  detail::sort(high.begin(), high.end());
-  // Edges starting at or before v, less those ending there too.
-  for (double v : after)
-    crossings +=
-        static_cast<std::size_t>((std::upper_bound(low.begin(), low.end(), v) - low.begin()) -
-                                 (std::upper_bound(high.begin(), high.end(), v) - high.begin()));
-  return crossings * stride;
+  ctx.run_serial("split lines: crossings", [&] {
+    if (!sample.ranges_sorted) {
+      detail::sort(sample.low.begin(), sample.low.end());
+      detail::sort(sample.high.begin(), sample.high.end());
+      sample.ranges_sorted = true;
+    }
+    // Edges starting at or before v, less those ending there too.
+    for (double v : after)
+      crossings +=
+          static_cast<std::size_t>((std::upper_bound(low.begin(), low.end(), v) - low.begin()) -
+                                   (std::upper_bound(high.begin(), high.end(), v) - high.begin()));
+  });
+  return crossings * sample.stride;
 }
 
 }  // namespace
 
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
-                                    unsigned parts) {
+                                    unsigned parts, const RunContext& ctx) {
   // Quantiles of a sample of at most 2^14 x values: balanced enough, and O(n) to take.
   constexpr std::size_t sample_limit = std::size_t{1} << 14;
-  const std::size_t stride = std::max<std::size_t>(1, cycle.size() / sample_limit);
-  std::vector<double> xs;
-  xs.reserve(cycle.size() / stride + 1);  // no copies as it grows: up to 128 KB
-  for (std::size_t i = 0; i < cycle.size(); i += stride)
-    xs.push_back(b.pos[corner_index(cycle[i])].x);
+  CycleSample sample;
+  sample.stride = std::max<std::size_t>(1, cycle.size() / sample_limit);
+  const std::size_t count = (cycle.size() + sample.stride - 1) / sample.stride;
+  const std::size_t tasks =
+      PEAR_HAS_THREADS ? std::clamp<std::size_t>(count / 1024, 1, ctx.partitions) : 1;
+  ctx.run_serial("split lines: allocate", [&] {
+    sample.xs.resize(count);
+    sample.low.resize(count);
+    sample.high.resize(count);
+  });
+  ctx.run_tasks("split lines: sample", tasks, [&](std::size_t t) {
+    const std::size_t end = count * (t + 1) / tasks;
+    for (std::size_t k = count * t / tasks; k < end; ++k) {
+      const std::size_t i = k * sample.stride;
+      const double x0 = b.pos[corner_index(cycle[i])].x;
+      const double x1 = b.pos[corner_index(cycle[i + 1 == cycle.size() ? 0 : i + 1])].x;
+      sample.xs[k] = x0;
+      sample.low[k] = std::min(x0, x1);
+      sample.high[k] = std::max(x0, x1);
+    }
+  });
+  // In tasks, one sort gives every quantile for less than selecting them on one thread.
+  const bool sorted = tasks >= 4;
+  if (sorted)
+    sort_in_parts(ctx, "split lines: sort", "split lines: merge", sample.xs, std::less<>{});
   const std::size_t budget = max_steiner_points(cycle.size());
   for (; parts >= 2; parts /= 2) {
-    std::vector<double> after = quantile_positions(xs, parts);
-    if (estimated_crossings(b, cycle, stride, after) <= budget) return after;
+    std::vector<double> after;
+    ctx.run_serial("split lines: quantiles",
+                   [&] { after = quantile_positions(sample.xs, parts, sorted); });
+    if (estimated_crossings(sample, after, tasks, ctx) <= budget) return after;
   }
   return {};
 }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/stage.hpp"
 
 namespace pear::detail {
 
@@ -69,9 +70,10 @@ inline std::size_t max_steiner_points(std::size_t nodes) {
 /// (i = 1 .. parts - 1) of a deterministic sample of the cycle, without repeats; fewer lines
 /// when the x values do not allow parts - 1 distinct ones. Where those lines would make more
 /// than max_steiner_points (estimated from the sample), parts is halved until they do not:
-/// the cost stays within a small multiple of clipping the whole boundary.
+/// the cost stays within a small multiple of clipping the whole boundary. The sample and the
+/// count in tasks of ctx (phases "split lines: ..."); the same lines for any threads.
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
-                                    unsigned parts);
+                                    unsigned parts, const RunContext& ctx);
 
 /// Splits pieces along one line; keeps its scratch memory between calls.
 class PieceSplitter {

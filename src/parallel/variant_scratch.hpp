@@ -58,6 +58,8 @@ struct VariantScratch {
   /// Divide-and-conquer: one per part (by pointer: a part is never moved, and the .wasm keeps
   /// no code to move one).
   std::vector<std::unique_ptr<DividePart>> divide_parts;
+  /// Divide-and-conquer: the search for the holes at Steiner points (made on first use).
+  std::unique_ptr<SteinerRepair> steiner_repair;
 };
 
 }  // namespace pear::detail

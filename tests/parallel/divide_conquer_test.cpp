@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 
 #include "gtest_corpus.hpp"
@@ -181,25 +182,44 @@ TEST(DivideAndConquer, PieceClippedByTheFallbackOnACrossingHole) {
 /// triangles at Steiner points): valid, no fallback, the same triangles at 1, 2 and 8 threads
 /// (expect_valid), and the tasks really split the passes (a build without threads has no such
 /// passes: one phase each).
-TEST(DivideAndConquer, RepairInTasks) {
-  const Polygon polygon = generate_polygon("random", 20000, 3);
+/// The tasks of each phase of a run at 16 partitions on 2 threads (the polygon split cleanly).
+std::map<std::string, std::size_t> tasks_per_phase(const Polygon& polygon) {
   expect_split_cleanly(polygon, {16});
   RunProfile profile;
   triangulate(polygon, Options{.algorithm = Algorithm::divide_and_conquer,
                                .threads = 2,
                                .partitions = 16,
                                .profile = &profile});
-  std::size_t glue_tasks = 0, sum_tasks = 0, one_phase = 0;
-  for (const auto& phase : profile.phases) {
-    if (phase.name == "find Steiner holes: glue") glue_tasks = phase.task_seconds.size();
-    if (phase.name == "check Steiner holes: sums") sum_tasks = phase.task_seconds.size();
-    one_phase += phase.name == "find Steiner holes" || phase.name == "check Steiner holes";
-  }
+  std::map<std::string, std::size_t> tasks;
+  for (const auto& phase : profile.phases) tasks[phase.name] += phase.task_seconds.size();
+  return tasks;
+}
+
+TEST(DivideAndConquer, RepairInTasks) {
+  std::map<std::string, std::size_t> tasks = tasks_per_phase(generate_polygon("random", 20000, 3));
   if (PEAR_HAS_THREADS) {
-    EXPECT_GT(glue_tasks, 1u);
-    EXPECT_GT(sum_tasks, 1u);
+    EXPECT_GT(tasks["find Steiner holes: glue"], 1u);
+    EXPECT_GT(tasks["check Steiner holes: sums"], 1u);
   } else {
-    EXPECT_EQ(one_phase, 2u);
+    EXPECT_EQ(tasks["find Steiner holes"] + tasks["check Steiner holes"], 2u);
+  }
+}
+
+// Past two passes' worth of nodes (link_tasks) the cycle is copied from its runs in tasks, and
+// the split lines' sample and the repair's sorts are tasks too: the same triangles at every
+// thread count, no step left on one thread where tasks were due.
+TEST(DivideAndConquer, SerialStepsInTasks) {
+  std::map<std::string, std::size_t> tasks = tasks_per_phase(generate_polygon("random", 70000, 5));
+  if (PEAR_HAS_THREADS) {
+    EXPECT_GT(tasks["cycle: copy"], 1u);
+    EXPECT_EQ(tasks.count("cycle: walk"), 0u);
+    EXPECT_GT(tasks["split lines: sample"], 1u);
+    EXPECT_GT(tasks["split lines: merge"], 1u);
+    EXPECT_GT(tasks["find Steiner holes: merge corners"], 1u);
+    EXPECT_GT(tasks["find Steiner holes: merge edges"], 1u);
+  } else {
+    EXPECT_EQ(tasks["cycle: walk"], 1u);
+    EXPECT_EQ(tasks.count("split lines: merge"), 0u);
   }
 }
 

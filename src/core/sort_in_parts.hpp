@@ -1,0 +1,84 @@
+// A sort of a large array in tasks: its pieces sorted each in a task, then merged pairwise in
+// rounds, each merge cut at equal output positions (a binary search per cut finds where the
+// two sorted runs split), so no step is serial but those searches. With a strict total order
+// the result is the one sort gives, whatever the number of tasks.
+#pragma once
+
+#include <algorithm>
+#include <bit>
+#include <vector>
+
+#include "core/stage.hpp"
+#include "geometry/sort.hpp"
+#include "pear/config.hpp"
+
+namespace pear::detail {
+
+/// Where the first k elements of the stable merge of sorted a[0, na) and b[0, nb) (a's before
+/// b's among equals) split them: a[0, i) and b[0, k - i); returns i.
+template <class T, class Less>
+std::size_t merge_split(const T* a, std::size_t na, const T* b, std::size_t nb, std::size_t k,
+                        Less& less) {
+  std::size_t lo = k > nb ? k - nb : 0, hi = std::min(k, na);
+  while (lo < hi) {
+    const std::size_t i = lo + (hi - lo) / 2;
+    // a[i] goes out before b[k - i - 1]: the split takes more of a.
+    if (!less(b[k - i - 1], a[i]))
+      lo = i + 1;
+    else
+      hi = i;
+  }
+  return lo;
+}
+
+/// Merges sorted a[0, na) and b[0, nb) into out[from, to) of their merge.
+template <class T, class Less>
+void merge_range(const T* a, std::size_t na, const T* b, std::size_t nb, std::size_t from,
+                 std::size_t to, T* out, Less& less) {
+  std::size_t i = merge_split(a, na, b, nb, from, less), j = from - i;
+  const std::size_t i_end = merge_split(a, na, b, nb, to, less), j_end = to - i_end;
+  T* o = out + from;
+  while (i < i_end && j < j_end) *o++ = less(b[j], a[i]) ? b[j++] : a[i++];
+  o = std::copy(a + i, a + i_end, o);
+  std::copy(b + j, b + j_end, o);
+}
+
+/// Sorts v by `less` in ctx.partitions tasks (a power of two of them, each at least
+/// `min_per_task` elements), recorded as the phases `sort_phase` and `merge_phase`; in one
+/// serial phase when that leaves one task (and always without threads).
+template <class T, class Less>
+void sort_in_parts(const RunContext& ctx, const char* sort_phase, const char* merge_phase,
+                   std::vector<T>& v, Less less, std::size_t min_per_task = 1024) {
+  const std::size_t n = v.size();
+  const std::size_t most =
+      std::min<std::size_t>(ctx.partitions, n / std::max<std::size_t>(1, min_per_task));
+  const std::size_t tasks = most < 2 ? 1 : std::bit_floor(most);
+  if (!PEAR_HAS_THREADS || tasks < 2) {
+    ctx.run_serial(sort_phase, [&] { detail::sort(v.begin(), v.end(), less); });
+    return;
+  }
+  const auto cut = [&](std::size_t piece, std::size_t pieces) { return n * piece / pieces; };
+  ctx.run_tasks(sort_phase, tasks, [&](std::size_t t) {
+    detail::sort(v.begin() + static_cast<std::ptrdiff_t>(cut(t, tasks)),
+                 v.begin() + static_cast<std::ptrdiff_t>(cut(t + 1, tasks)), less);
+  });
+  std::vector<T> other(n);
+  std::vector<T>*from = &v, *to = &other;
+  // Round r merges runs of 2^r pieces in pairs; each pair's output in 2^(r + 1) parts.
+  for (std::size_t width = 1; width < tasks; width *= 2) {
+    ctx.run_tasks(merge_phase, tasks, [&](std::size_t t) {
+      const std::size_t pair = t / (2 * width), part = t % (2 * width);
+      const std::size_t begin = cut(2 * width * pair, tasks),
+                        middle = cut(2 * width * pair + width, tasks),
+                        end = cut(2 * width * (pair + 1), tasks);
+      const std::size_t size = end - begin;
+      merge_range(from->data() + begin, middle - begin, from->data() + middle, end - middle,
+                  size * part / (2 * width), size * (part + 1) / (2 * width), to->data() + begin,
+                  less);
+    });
+    std::swap(from, to);
+  }
+  if (from != &v) v.swap(other);
+}
+
+}  // namespace pear::detail
