@@ -302,9 +302,6 @@ Status clean_serially(const InputPolygon& in, CleanPolygon& out,
   return Status::ok;
 }
 
-/// A parallel pass's share of the points (or corners) of the input or of a ring.
-constexpr std::size_t clean_chunk = std::size_t{1} << 15;
-
 /// Pieces of at most clean_chunk items cut from consecutive ranges of `lengths` items, and the
 /// tasks that take them: runs of pieces of about clean_chunk items together, so that a
 /// country's thousand small holes are not a thousand tasks.

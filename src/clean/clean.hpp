@@ -12,7 +12,9 @@ namespace pear::detail {
 /// in range, no spike, no ring dropped) is cleaned in parallel passes on ctx's runner; an input
 /// that is not that case is cleaned again serially, which names what it finds. The same result
 /// either way.
-inline constexpr std::size_t clean_in_parts_from = std::size_t{1} << 17;
+inline constexpr std::size_t clean_in_parts_from = std::size_t{1} << 15;
+/// A parallel pass's share of the points (or corners) of the input or of a ring.
+inline constexpr std::size_t clean_chunk = std::size_t{1} << 13;
 
 /// Checks the input and fills `out`. Returns Status::invalid_input (with an error diagnostic
 /// naming ring and vertex) when nothing can be triangulated; warnings are appended too.

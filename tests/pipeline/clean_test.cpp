@@ -21,7 +21,7 @@
 namespace pear::detail {
 namespace {
 
-constexpr std::size_t chunk = std::size_t{1} << 15;  // clean.cpp's clean_chunk
+constexpr std::size_t chunk = pear::detail::clean_chunk;
 
 struct Input {
   std::vector<Point> points;
