@@ -211,11 +211,16 @@ std::pair<std::size_t, std::size_t> piece(std::size_t i, std::size_t pieces, std
 /// bucket_edges for all edges, in parallel: each chunk of edges counts its entries per cell,
 /// the counts become per-chunk fill positions (cell by cell, chunk by chunk, so a cell lists
 /// its edges in increasing order, as bucket_edges does), and each chunk fills its entries.
-/// False as soon as a chunk has more than `entries_per_edge` entries per edge of its own.
+/// False as soon as a chunk has more than `entries_per_edge` entries per edge of its own. A
+/// chunk a partition, of at least 8,192 edges: each chunk also clears and sums a count per
+/// cell, so more chunks than tasks only add work; at most 8 on grids of over 2^18 cells (the
+/// counts' memory).
 bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunContext& ctx,
                  RootGrid& root) {
   const std::size_t n = edges.size(), cells = root.frame.cell_count();
-  const std::size_t chunks = std::clamp<std::size_t>(n / 32768, 1, 8);
+  const std::size_t most = cells <= (std::size_t{1} << 18) ? 16 : 8;
+  const std::size_t chunks =
+      std::clamp<std::size_t>(std::min<std::size_t>(n / 8192, ctx.partitions), 1, most);
   root.chunk_counts.resize(chunks * cells);
   std::vector<std::size_t> chunk_entries(chunks, 0);
   std::vector<char> too_many(chunks, false);

@@ -392,6 +392,43 @@ TEST(Simplicity, PerturbedLargePolygonsGiveTheSameAnswerAtEveryThreadCount) {
   }
 }
 
+/// The root grid's buckets are filled in a chunk of edges a partition (at least 8,192 edges
+/// each): the same conflict at every partition and thread count, the counting in tasks.
+TEST(Simplicity, RootGridInChunksFindsTheSameConflict) {
+  constexpr std::size_t n = 50000;
+  Ring made;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = 1000 + 0.3 * std::sin(2 * M_PI * static_cast<double>(i % 10) / 10);
+    const double angle = 2 * M_PI * static_cast<double>(i) / n;
+    made.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  const ThreadContexts contexts;
+  for (int moved = 0; moved <= 2; ++moved) {
+    Ring ring = made;
+    for (int m = 0; m < moved; ++m) std::swap(ring[(m * 7919 + 17) % n], ring[n / 3 + 101 * m]);
+    SCOPED_TRACE(std::to_string(moved) + " swaps");
+    const CleanPolygon clean = cleaned(Polygon{ring});
+    SimplicityCheck check;
+    const auto one_chunk = check.find_violation(clean, RunContext{}, Method::grid_only);
+    ASSERT_EQ(one_chunk.has_value(), moved > 0);
+    for (const RunContext& given : contexts.list) {
+      for (std::uint32_t partitions : {2u, 3u, 16u}) {
+        RunProfile profile;
+        RunContext ctx = given;
+        ctx.partitions = partitions;
+        ctx.profile = &profile;
+        EXPECT_EQ(check.find_violation(clean, ctx, Method::grid_only), one_chunk)
+            << partitions << " partitions";
+        const auto count = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
+          return p.name == "check simplicity: root grid count";
+        });
+        ASSERT_NE(count, profile.phases.end());
+        EXPECT_EQ(count->task_seconds.size(), std::min<std::size_t>(partitions, n / 8192));
+      }
+    }
+  }
+}
+
 /// Up to two partitions a coast-like outline (here a circle with a ripple: runs of about 12
 /// edges monotone in x) is checked by its runs, the pairs of runs in tasks: on 1, 2 and 4
 /// threads, with 1 and 2 partitions, the smallest edge in any conflict as the grid alone finds
