@@ -160,7 +160,7 @@ struct KeyedBorder {
 };
 
 /// Border half-edges per range task: fewer are paired on one thread.
-constexpr std::size_t borders_per_range = 4096;
+constexpr std::size_t borders_per_range = 1024;
 
 /// The sets' border half-edges with their ends as keys, scattered into ranges of their sorted
 /// order: cut at keys sampled every k-th border (in set order, so the cuts depend on the
