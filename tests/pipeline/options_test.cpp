@@ -85,16 +85,21 @@ TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
 }
 
 // Past two partitions automatic takes divide-and-conquer along corridors (more than 16 runs of
-// edges monotone in x, over 64 edges a run: a spiral's walls) and partition-and-cut elsewhere
-// (a comb: 2 runs; the star: runs of 1.5 edges).
+// edges monotone in x, over 64 edges a run: a spiral's walls) and on grids of holes (a hole
+// every 16 nodes or more often, runs too short to be coast-like), mark-and-cut on a few long
+// runs (a comb: 2 runs), and partition-and-cut elsewhere (the star: runs of 1.5 edges; random
+// polygons with holes, coast-like: runs of 4 edges).
 TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
   struct Case {
     const char* kind;
     Algorithm expected, other;
   };
-  for (const Case c : {Case{"spiral", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
-                       Case{"comb", Algorithm::mark_and_cut, Algorithm::partition_and_cut},
-                       Case{"star", Algorithm::partition_and_cut, Algorithm::divide_and_conquer}}) {
+  for (const Case c :
+       {Case{"spiral", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
+        Case{"comb", Algorithm::mark_and_cut, Algorithm::partition_and_cut},
+        Case{"star", Algorithm::partition_and_cut, Algorithm::divide_and_conquer},
+        Case{"holes", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
+        Case{"random-holes", Algorithm::partition_and_cut, Algorithm::divide_and_conquer}}) {
     SCOPED_TRACE(c.kind);
     const Polygon polygon = generate_polygon(c.kind, 60000, 3);
     for (unsigned partitions : {4u, 8u}) {
