@@ -45,16 +45,16 @@ void merge_range(const T* a, std::size_t na, const T* b, std::size_t nb, std::si
 
 /// Sorts v by `less` in ctx.partitions tasks (a power of two of them, each at least
 /// `min_per_task` elements), recorded as the phases `sort_phase` and `merge_phase`; in one
-/// serial phase when that leaves one task (and always without threads).
+/// serial phase when that leaves one task, and without threads in none (the caller's).
 template <class T, class Less>
 void sort_in_parts(const RunContext& ctx, const char* sort_phase, const char* merge_phase,
                    std::vector<T>& v, Less less, std::size_t min_per_task = 1024) {
   const std::size_t n = v.size();
   const std::size_t most =
       std::min<std::size_t>(ctx.partitions, n / std::max<std::size_t>(1, min_per_task));
-  const std::size_t tasks = most < 2 ? 1 : std::bit_floor(most);
-  if (!PEAR_HAS_THREADS || tasks < 2) {
-    ctx.run_serial(sort_phase, [&] { detail::sort(v.begin(), v.end(), less); });
+  const std::size_t tasks = !PEAR_HAS_THREADS || most < 2 ? 1 : std::bit_floor(most);
+  if (tasks < 2) {
+    ctx.run_serial_if_threads(sort_phase, [&] { detail::sort(v.begin(), v.end(), less); });
     return;
   }
   const auto cut = [&](std::size_t piece, std::size_t pieces) { return n * piece / pieces; };

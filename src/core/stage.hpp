@@ -11,6 +11,7 @@
 
 #include "core/fill_vector.hpp"
 #include "core/tasks.hpp"
+#include "pear/config.hpp"
 #include "pear/geometry.hpp"
 #include "pear/pear.hpp"
 
@@ -91,6 +92,22 @@ struct RunContext {
   template <class Step>
   void run_serial(const char* phase, Step&& step) const {
     run_tasks(phase, 1, [&](std::size_t) { step(); });
+  }
+
+  /// run_tasks for the steps that only a build with threads cuts into phases of their own;
+  /// without threads the tasks are plain calls, timed with whatever phase encloses them (the
+  /// .wasm keeps no wrapper per step).
+  template <class Task>
+  void run_tasks_if_threads(const char* phase, std::size_t count, Task&& task) const {
+    if constexpr (PEAR_HAS_THREADS)
+      run_tasks(phase, count, task);
+    else
+      for (std::size_t i = 0; i < count; ++i) task(i);
+  }
+  /// run_serial the same way.
+  template <class Step>
+  void run_serial_if_threads(const char* phase, Step&& step) const {
+    run_tasks_if_threads(phase, 1, [&](std::size_t) { step(); });
   }
 };
 

@@ -65,7 +65,7 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
                                       const std::vector<SteinerTriangle>& triangles,
                                       const RunContext& ctx) {
   std::vector<PieceCorner>& corners = corners_;
-  ctx.run_serial("find Steiner holes: corners", [&] {
+  ctx.run_serial_if_threads("find Steiner holes: corners", [&] {
     corners = all_steiner_points(lines);
     for (std::size_t i = 0, steiner = corners.size(); i < steiner; ++i) {
       const SteinerPoint& s = lines[corner_line(corners[i])].steiner[corner_index(corners[i])];
@@ -77,19 +77,19 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
   sort_in_parts(ctx, "find Steiner holes: sort corners", "find Steiner holes: merge corners",
                 corners, std::less<>{});
   std::vector<std::pair<CornerKey, PieceCorner>>& keyed = keyed_;
-  ctx.run_serial("find Steiner holes: unique", [&] {
+  ctx.run_serial_if_threads("find Steiner holes: unique", [&] {
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
     keyed.resize(corners.size());
   });
   const std::size_t key_tasks = repair_tasks(corners.size(), ctx);
-  ctx.run_tasks("find Steiner holes: keys", key_tasks, [&](std::size_t task) {
+  ctx.run_tasks_if_threads("find Steiner holes: keys", key_tasks, [&](std::size_t task) {
     const std::size_t end = part_begin(corners.size(), key_tasks, task + 1);
     for (std::size_t i = part_begin(corners.size(), key_tasks, task); i < end; ++i)
       keyed[i] = {key_of(b, lines, corners[i]), corners[i]};
   });
   sort_in_parts(ctx, "find Steiner holes: sort keys", "find Steiner holes: merge keys", keyed,
                 std::less<>{});
-  ctx.run_serial("find Steiner holes: group", [&] {
+  ctx.run_serial_if_threads("find Steiner holes: group", [&] {
     canonical_.resize(keyed.size());
     for (std::size_t i = 0, first = 0; i < keyed.size(); ++i) {
       if (keyed[i].first != keyed[first].first) first = i;
@@ -180,7 +180,7 @@ bool SteinerRepair::holes_are_disks(const std::vector<std::uint32_t>& hole_start
 /// edges_, sorted (in tasks of ctx), and across_ sized for glue(); false when a directed edge
 /// repeats (the triangles overlap).
 bool SteinerRepair::index_edges(const RunContext& ctx) {
-  ctx.run_serial("find Steiner holes: edges", [&] {
+  ctx.run_serial_if_threads("find Steiner holes: edges", [&] {
     edges_.resize(3 * triangles_.size());
     for (std::uint32_t t = 0; t < triangles_.size(); ++t)
       for (std::uint32_t c = 0; c < 3; ++c)
@@ -191,7 +191,7 @@ bool SteinerRepair::index_edges(const RunContext& ctx) {
                   return p.from < q.from || (p.from == q.from && p.to < q.to);
                 });
   bool repeats = false;
-  ctx.run_serial("find Steiner holes: repeats", [&] {
+  ctx.run_serial_if_threads("find Steiner holes: repeats", [&] {
     for (std::size_t i = 1; i < edges_.size() && !repeats; ++i)
       repeats = edges_[i].from == edges_[i - 1].from && edges_[i].to == edges_[i - 1].to;
     across_.resize(edges_.size());

@@ -83,7 +83,7 @@ std::size_t estimated_crossings(CycleSample& sample, const std::vector<double>& 
   const std::vector<double>&low = sample.low, &high = sample.high;
   if (after.size() <= few_lines) {
     std::vector<std::size_t> counts(tasks, 0);
-    ctx.run_tasks("split lines: crossings", tasks, [&](std::size_t t) {
+    ctx.run_tasks_if_threads("split lines: crossings", tasks, [&](std::size_t t) {
       std::size_t crossings = 0;
       const std::size_t end = low.size() * (t + 1) / tasks;
       for (std::size_t e = low.size() * t / tasks; e < end; ++e)
@@ -93,7 +93,7 @@ std::size_t estimated_crossings(CycleSample& sample, const std::vector<double>& 
     return std::accumulate(counts.begin(), counts.end(), std::size_t{0}) * sample.stride;
   }
   std::size_t crossings = 0;
-  ctx.run_serial("split lines: crossings", [&] {
+  ctx.run_serial_if_threads("split lines: crossings", [&] {
     if (!sample.ranges_sorted) {
       detail::sort(sample.low.begin(), sample.low.end());
       detail::sort(sample.high.begin(), sample.high.end());
@@ -119,12 +119,12 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   const std::size_t count = (cycle.size() + sample.stride - 1) / sample.stride;
   const std::size_t tasks =
       PEAR_HAS_THREADS ? std::clamp<std::size_t>(count / 1024, 1, ctx.partitions) : 1;
-  ctx.run_serial("split lines: allocate", [&] {
+  ctx.run_serial_if_threads("split lines: allocate", [&] {
     sample.xs.resize(count);
     sample.low.resize(count);
     sample.high.resize(count);
   });
-  ctx.run_tasks("split lines: sample", tasks, [&](std::size_t t) {
+  ctx.run_tasks_if_threads("split lines: sample", tasks, [&](std::size_t t) {
     const std::size_t end = count * (t + 1) / tasks;
     for (std::size_t k = count * t / tasks; k < end; ++k) {
       const std::size_t i = k * sample.stride;
@@ -142,8 +142,8 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   const std::size_t budget = max_steiner_points(cycle.size());
   for (; parts >= 2; parts /= 2) {
     std::vector<double> after;
-    ctx.run_serial("split lines: quantiles",
-                   [&] { after = quantile_positions(sample.xs, parts, sorted); });
+    ctx.run_serial_if_threads("split lines: quantiles",
+                              [&] { after = quantile_positions(sample.xs, parts, sorted); });
     if (estimated_crossings(sample, after, tasks, ctx) <= budget) return after;
   }
   return {};

@@ -81,7 +81,7 @@ TEST(SortInParts, SortsLikeOneSortAtEveryThreadAndPartitionCount) {
       const std::size_t tasks = std::min<std::size_t>(ctx.partitions, n / 1024);
       const std::size_t rounds = tasks < 2 ? 0 : std::bit_width(tasks) - 1;
       EXPECT_EQ(phases_named(p, "merge"), PEAR_HAS_THREADS ? rounds : 0) << "n " << n;
-      EXPECT_EQ(phases_named(p, "sort"), 1u);
+      EXPECT_EQ(phases_named(p, "sort"), PEAR_HAS_THREADS ? 1u : 0u);
     });
   }
 }
