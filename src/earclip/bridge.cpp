@@ -4,7 +4,9 @@
 #include <limits>
 #include <numeric>
 
+#include "core/sort_in_parts.hpp"
 #include "geometry/sort.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 namespace {
@@ -71,23 +73,29 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
   } else {
     for (std::size_t k = 0; k < holes; ++k) leftmost(k);
   }
-  const auto order = [&] {
-    detail::sort(holes_.begin(), holes_.end(), [&](const Hole& a, const Hole& c) {
-      const Point &p = b_->pos[a.leftmost], &q = b_->pos[c.leftmost];
-      return lexicographic_less(p, q) || (p == q && a.leftmost < c.leftmost);
-    });
-    assign_ranks(polygon);
+  const auto before = [&](const Hole& a, const Hole& c) {
+    const Point &p = b_->pos[a.leftmost], &q = b_->pos[c.leftmost];
+    return lexicographic_less(p, q) || (p == q && a.leftmost < c.leftmost);
   };
-  if (parallel)
-    ctx.run_serial("bridge: order holes", order);
-  else
-    order();
+  if (!PEAR_HAS_THREADS || !parallel) {  // a build without threads keeps no tasks (.wasm)
+    detail::sort(holes_.begin(), holes_.end(), before);
+    rank_.resize(polygon.points.size());
+    assign_ranks(polygon, 0, holes);
+    return;
+  }
+  // A total order (ties by node): the same order in any number of parts.
+  sort_in_parts(ctx, "bridge: sort holes", "bridge: merge holes", holes_, before, 256);
+  ctx.run_serial("bridge: ranks", [&] { rank_.resize(polygon.points.size()); });
+  const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
+  ctx.run_tasks("bridge: ranks", tasks, [&](std::size_t t) {
+    assign_ranks(polygon, holes * t / tasks, holes * (t + 1) / tasks);
+  });
 }
 
-void HoleBridger::assign_ranks(const CleanPolygon& polygon) {
-  rank_.resize(polygon.points.size());
-  std::fill(rank_.begin(), rank_.begin() + polygon.ring_starts[1], 0u);
-  for (std::size_t k = 0; k < holes_.size(); ++k) {
+/// Ranks the nodes of holes_[from, to) (and the outer ring's, 0, with the first).
+void HoleBridger::assign_ranks(const CleanPolygon& polygon, std::size_t from, std::size_t to) {
+  if (from == 0) std::fill(rank_.begin(), rank_.begin() + polygon.ring_starts[1], 0u);
+  for (std::size_t k = from; k < to; ++k) {
     const std::uint32_t ring = holes_[k].ring;
     std::fill(rank_.begin() + polygon.ring_starts[ring],
               rank_.begin() + polygon.ring_starts[ring + 1], static_cast<std::uint32_t>(k + 1));

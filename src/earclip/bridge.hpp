@@ -112,7 +112,7 @@ class HoleBridger {
   void fill_cells(std::uint32_t nodes);
   void build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx);
   void sort_band(CellLists& lists, std::size_t list, std::size_t band, std::size_t per_band);
-  void assign_ranks(const CleanPolygon& polygon);
+  void assign_ranks(const CleanPolygon& polygon, std::size_t from, std::size_t to);
   void find_all(const RunContext& ctx);
   void splice_all(const CleanPolygon& polygon, bool found_in_parallel,
                   std::vector<std::uint32_t>& unjoined);

@@ -229,6 +229,21 @@ TEST(BridgeInParts, GeneratedFamilies) {
     }
 }
 
+/// Past 512 holes they are sorted in tasks (and ranked in tasks): the same joining as the
+/// serial one at every thread and part count, the merge rounds run.
+TEST(BridgeInParts, ManyHolesSortedInParts) {
+  const Polygon polygon = generate_polygon("random-holes", 12000, 4);
+  ASSERT_GT(polygon.size(), 1024u);
+  expect_same_in_parts(polygon, false);
+  for_each_context({2u}, {16u}, [&](const RunContext& ctx, const RunProfile& profile) {
+    bridge(cleaned(polygon), ctx, true);
+    const auto merges =
+        std::count_if(profile.phases.begin(), profile.phases.end(),
+                      [](const auto& p) { return p.name == "bridge: merge holes"; });
+    EXPECT_EQ(merges > 0, PEAR_HAS_THREADS != 0);
+  });
+}
+
 /// One entry per cycle of at least three nodes, node by node: the cycle through `first`
 /// entered there, then the others entered at their lowest node; the cycles through `skip`
 /// left out.
