@@ -392,16 +392,24 @@ TEST(Simplicity, PerturbedLargePolygonsGiveTheSameAnswerAtEveryThreadCount) {
   }
 }
 
+/// A circle of radius 1,000 through n points, its radius rippled by `amplitude` with a period
+/// of `period` points: runs of about period edges monotone in x, coast-like.
+Ring rippled_circle(std::size_t n, double amplitude, std::size_t period) {
+  Ring ring;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double phase = static_cast<double>(i % period) / static_cast<double>(period);
+    const double r = 1000 + amplitude * std::sin(2 * M_PI * phase);
+    const double angle = 2 * M_PI * static_cast<double>(i) / static_cast<double>(n);
+    ring.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  return ring;
+}
+
 /// The root grid's buckets are filled in a chunk of edges a partition (at least 8,192 edges
 /// each): the same conflict at every partition and thread count, the counting in tasks.
 TEST(Simplicity, RootGridInChunksFindsTheSameConflict) {
   constexpr std::size_t n = 50000;
-  Ring made;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = 1000 + 0.3 * std::sin(2 * M_PI * static_cast<double>(i % 10) / 10);
-    const double angle = 2 * M_PI * static_cast<double>(i) / n;
-    made.push_back({r * std::cos(angle), r * std::sin(angle)});
-  }
+  const Ring made = rippled_circle(n, 0.3, 10);
   const ThreadContexts contexts;
   for (int moved = 0; moved <= 2; ++moved) {
     Ring ring = made;
@@ -435,12 +443,7 @@ TEST(Simplicity, RootGridInChunksFindsTheSameConflict) {
 /// it, and no conflict (nor touching) on the polygon as made.
 TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
   constexpr std::size_t n = 60000;
-  Ring made;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double r = 1000 + 0.2 * std::sin(2 * M_PI * static_cast<double>(i % 12) / 12);
-    const double angle = 2 * M_PI * static_cast<double>(i) / n;
-    made.push_back({r * std::cos(angle), r * std::sin(angle)});
-  }
+  const Ring made = rippled_circle(n, 0.2, 12);
   ASSERT_LE(x_reversals(cleaned(Polygon{made})) * 3, n) << "coast-like, as the test means";
   const ThreadContexts contexts;
   std::mt19937 rng(11);
