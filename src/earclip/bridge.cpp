@@ -85,7 +85,7 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
   }
   // A total order (ties by node): the same order in any number of parts.
   sort_in_parts(ctx, "bridge: sort holes", "bridge: merge holes", holes_, before, 256);
-  ctx.run_serial("bridge: ranks", [&] { rank_.resize(polygon.points.size()); });
+  ctx.run_serial("bridge: rank array", [&] { rank_.resize(polygon.points.size()); });
   const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
   ctx.run_tasks("bridge: ranks", tasks, [&](std::size_t t) {
     assign_ranks(polygon, holes * t / tasks, holes * (t + 1) / tasks);

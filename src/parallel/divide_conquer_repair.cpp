@@ -40,13 +40,11 @@ std::size_t repair_tasks(std::size_t items, const RunContext& ctx) {
   return std::clamp<std::size_t>(items / 1024, 1, std::max(1u, ctx.partitions));
 }
 
-/// Every Steiner point, as a corner.
-std::vector<PieceCorner> all_steiner_points(const std::vector<SplitLine>& lines) {
-  std::vector<PieceCorner> corners;
+/// Appends every Steiner point, as a corner, to `corners`.
+void append_steiner_points(const std::vector<SplitLine>& lines, std::vector<PieceCorner>& corners) {
   for (std::uint32_t line = 0; line < lines.size(); ++line)
     for (std::uint32_t i = 0; i < lines[line].steiner.size(); ++i)
       corners.push_back(steiner_corner(line, i));
-  return corners;
 }
 
 }  // namespace
@@ -66,7 +64,8 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
                                       const RunContext& ctx) {
   std::vector<PieceCorner>& corners = corners_;
   ctx.run_serial_if_threads("find Steiner holes: corners", [&] {
-    corners = all_steiner_points(lines);
+    corners.clear();  // kept, not replaced: its pages stay from run to run
+    append_steiner_points(lines, corners);
     for (std::size_t i = 0, steiner = corners.size(); i < steiner; ++i) {
       const SteinerPoint& s = lines[corner_line(corners[i])].steiner[corner_index(corners[i])];
       corners.push_back(s.from);
@@ -225,11 +224,11 @@ bool SteinerRepair::find_holes(const Boundary& b, const std::vector<SplitLine>& 
   triangles_.resize(input.size());
   bool found = false;
   if (!PEAR_HAS_THREADS) {  // one phase: a build without threads keeps no task passes (.wasm)
+    // Without threads their steps are plain calls inside this phase (run_*_if_threads).
     ctx.run_serial("find Steiner holes", [&] {
-      const RunContext here;  // unprofiled: the phase is this one
-      canonical_corners(b, lines, input, here);
+      canonical_corners(b, lines, input, ctx);
       canonicalize(input, 0, input.size());
-      found = index_edges(here) && (glue(0, edges_.size()), walk_holes());
+      found = index_edges(ctx) && (glue(0, edges_.size()), walk_holes());
     });
     return found;
   }
@@ -310,7 +309,8 @@ void SteinerRepair::add_split_edges(const Boundary& b, const std::vector<SplitLi
   const auto add = [&](PieceCorner from, PieceCorner to, int sign) {
     add_use(uses, canonical(from), canonical(to), sign);
   };
-  std::vector<PieceCorner> steiner = all_steiner_points(lines);
+  std::vector<PieceCorner> steiner;
+  append_steiner_points(lines, steiner);
   const auto& point = [&](PieceCorner c) -> const SteinerPoint& {
     return lines[corner_line(c)].steiner[corner_index(c)];
   };
