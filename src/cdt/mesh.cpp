@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <memory>
 #include <utility>
 
@@ -28,16 +29,12 @@ struct EdgeKeys {
   std::size_t half_edges = 0;
 };
 
-/// The most chunks and buckets build_mesh cuts the edges into (each chunk counts its edges per
-/// bucket on the stack).
-constexpr std::size_t max_mesh_parts = 256;
-
 /// Edges are cut into `parts` chunks (each a range of triangles and one of ring vertices) and
-/// put into `parts` buckets by their low vertex (a range of vertices each), so that equal edges
-/// meet in one bucket and the buckets are matched in parallel.
+/// put into `parts` buckets by their low vertex (VertexBuckets), so that equal edges meet in one
+/// bucket and the buckets are matched in parallel.
 struct EdgeBuckets {
+  VertexBuckets vertices;
   std::size_t parts = 1;
-  std::uint32_t shift = 0;          ///< bucket(v) = v >> shift (a division is slow)
   std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
   std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
   std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
@@ -66,13 +63,12 @@ void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, s
   // edges mostly fall in one bucket, and one counter would make each increment wait for the last.
   std::array<std::array<std::uint32_t, max_mesh_parts>, 4> counts{};
   std::uint32_t highest = 0;
-  const std::uint32_t shift = buckets.shift;
   const auto put = [&](std::size_t e, std::uint32_t u, std::uint32_t v, std::size_t row) {
     const std::uint32_t low = std::min(u, v), high = std::max(u, v);
     keys.low[e] = low;
     keys.high[e] = high;
     highest = std::max(highest, high);
-    if (buckets.parts > 1) ++counts[row][(low >> shift) & (max_mesh_parts - 1)];
+    if (buckets.parts > 1) ++counts[row][buckets.vertices.bucket(low)];
   };
   const auto [t0, t1] = chunk_of(triangles.size(), buckets.parts, c);
   for (std::size_t t = t0; t < t1; ++t)
@@ -140,19 +136,19 @@ struct AllEdges {
 };
 
 /// One bucket (or, in one part, every edge): its edges counted by low over the bucket's
-/// vertices, each low's few edges sorted by high by insertion, as high << 32 | edge (integers
-/// compared, no key looked up), then equal edges paired from those values alone. A ring edge
-/// makes its triangle's edge a constraint. The order, and so every twin, depends on neither the
-/// chunks nor the parts: within an edge, the lowest number first.
-template <class Edges>
-BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const Edges& edges,
-                         std::uint32_t first_vertex, std::size_t width) {
+/// vertex slots (slot(low) < width), each low's few edges sorted by high by insertion, as high <<
+/// 32 | edge (integers compared, no key looked up), then equal edges paired from those values
+/// alone. A ring edge makes its triangle's edge a constraint. The order, and so every twin, depends
+/// on neither the chunks nor the parts: within an edge, the lowest number first.
+template <class Edges, class Slot>
+BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const Edges& edges, Slot slot,
+                         std::size_t width) {
   std::vector<std::uint32_t> start(width + 1, 0);
   std::vector<std::uint64_t> sorted(edges.size());
-  for (const std::uint32_t e : edges) ++start[keys.low[e] - first_vertex + 1];
+  for (const std::uint32_t e : edges) ++start[slot(keys.low[e]) + 1];
   for (std::size_t v = 0; v < width; ++v) start[v + 1] += start[v];
   for (const std::uint32_t e : edges)
-    sorted[start[keys.low[e] - first_vertex]++] = std::uint64_t{keys.high[e]} << 32 | e;
+    sorted[start[slot(keys.low[e])]++] = std::uint64_t{keys.high[e]} << 32 | e;
   BucketMatch m;
   for (std::size_t v = 0, from = 0; v < width; from = start[v++]) {
     const auto first = sorted.begin() + static_cast<std::ptrdiff_t>(from);
@@ -207,6 +203,19 @@ bool pair_by_position(Mesh& mesh, const EdgeKeys& keys, std::vector<std::uint32_
 
 }  // namespace
 
+VertexBuckets::VertexBuckets(std::size_t vertices, std::size_t parts) : parts_(parts) {
+  while ((std::size_t{1} << parts_shift_) < parts) ++parts_shift_;
+  block_shift_ = 6;
+  while ((vertices >> block_shift_) > 4 * parts) ++block_shift_;
+  width_ = ((vertices >> (block_shift_ + parts_shift_)) + 1) << block_shift_;
+}
+
+std::size_t mesh_parts(std::size_t edges, std::uint32_t partitions) {
+  const std::size_t most = std::clamp<std::size_t>(partitions, 1, max_mesh_parts);
+  return std::min(std::bit_ceil(most),
+                  std::bit_floor(std::max<std::size_t>(edges / mesh_edges_per_task, 1)));
+}
+
 EdgeEnds::EdgeEnds(const Point& p, const Point& q) : low(p), high(q) {
   if (lexicographic_less(q, p)) std::swap(low, high);
 }
@@ -216,12 +225,8 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   const std::size_t edges = 3 * triangles.size() + polygon.points.size();
   EdgeKeys keys;
   EdgeBuckets buckets;
-  const std::size_t most_parts = std::clamp<std::size_t>(ctx.partitions, 1, max_mesh_parts);
-  buckets.parts = std::clamp<std::size_t>(edges / mesh_edges_per_task, 1, most_parts);
-  // A power of two at least the vertices over the parts: the buckets past the last vertex
-  // stay empty.
-  const std::size_t per_part = (points.size() + buckets.parts - 1) / buckets.parts;
-  while ((std::size_t{1} << buckets.shift) < per_part) ++buckets.shift;
+  buckets.parts = mesh_parts(edges, ctx.partitions);
+  buckets.vertices = VertexBuckets(points.size(), buckets.parts);
   ctx.run_serial("cdt adjacency: allocate", [&] {
     mesh.points = points;
     mesh.triangles = &triangles;
@@ -241,22 +246,22 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   std::vector<BucketMatch> matches(buckets.parts);
   if (buckets.parts == 1) {
     ctx.run_serial("cdt adjacency: match", [&] {
-      matches[0] = match_bucket(mesh, keys, AllEdges{edges}, 0, points.size());
+      const auto same = [](std::uint32_t v) { return v; };
+      matches[0] = match_bucket(mesh, keys, AllEdges{edges}, same, points.size());
     });
   } else {
     ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets); });
     ctx.run_tasks("cdt adjacency: scatter", buckets.parts, [&](std::size_t c) {
       std::size_t* at = &buckets.counts[c * buckets.parts];
       for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
-        buckets.edges[at[keys.low[e] >> buckets.shift]++] = static_cast<std::uint32_t>(e);
+        buckets.edges[at[buckets.vertices.bucket(keys.low[e])]++] = static_cast<std::uint32_t>(e);
       });
     });
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
       const std::span<const std::uint32_t> bucket(buckets.edges.get() + buckets.begin[b],
                                                   buckets.begin[b + 1] - buckets.begin[b]);
-      const std::size_t width = std::size_t{1} << buckets.shift;
-      const auto first_vertex = static_cast<std::uint32_t>(b * width);
-      matches[b] = match_bucket(mesh, keys, bucket, first_vertex, width);
+      const auto slot = [&](std::uint32_t v) { return buckets.vertices.slot(v); };
+      matches[b] = match_bucket(mesh, keys, bucket, slot, buckets.vertices.width());
     });
   }
   bool built = true;

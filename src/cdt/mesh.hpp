@@ -47,9 +47,41 @@ inline std::uint32_t next_half_edge(std::uint32_t h) {
 /// The fewest edges (half-edges and ring edges) worth a task of their own in build_mesh.
 inline constexpr std::size_t mesh_edges_per_task = 4096;
 
+/// The most chunks and buckets build_mesh cuts the edges into (each chunk counts its edges per
+/// bucket on the stack).
+inline constexpr std::size_t max_mesh_parts = 256;
+
+/// How many tasks build_mesh cuts each phase into: a power of two (buckets are picked by bits),
+/// the partitions' rounded up, at most one per mesh_edges_per_task edges and max_mesh_parts.
+std::size_t mesh_parts(std::size_t edges, std::uint32_t partitions);
+
+/// Which of `parts` buckets (a power of two) an edge goes to by its low vertex: blocks of at
+/// least 64 vertices, about 4 per bucket, dealt to the buckets in turn. A bucket per range of
+/// vertices would leave one nearly all the edges where low vertices cluster: the 100k spiral's
+/// walls pair vertex i with n - i, so at 2 parts every edge fell in the first bucket and the CDT
+/// at 2 threads was slower than on one. Blocks keep a coast's neighbouring edges together.
+class VertexBuckets {
+ public:
+  VertexBuckets() = default;
+  VertexBuckets(std::size_t vertices, std::size_t parts);
+  std::size_t bucket(std::uint32_t v) const { return (v >> block_shift_) & (parts_ - 1); }
+  /// v's place among its bucket's vertices: its block's turn, then its place in the block.
+  std::uint32_t slot(std::uint32_t v) const {
+    return (v >> (block_shift_ + parts_shift_) << block_shift_) |
+           (v & ((std::uint32_t{1} << block_shift_) - 1));
+  }
+  /// Slots of a bucket: slot(v) < width() for every v < vertices.
+  std::size_t width() const { return width_; }
+
+ private:
+  std::size_t parts_ = 1;
+  std::uint32_t block_shift_ = 0, parts_shift_ = 0;
+  std::size_t width_ = 0;
+};
+
 /// Fills mesh.twin for `triangles`: half-edges and the polygon's ring edges are matched by their
-/// endpoints (caller indices), sorted in buckets by the lower one, in up to ctx.partitions tasks
-/// per phase, at most 256 (close to linear work; the twins do not depend on the partitions). An
+/// endpoints (caller indices), sorted in buckets by the lower one, in mesh_parts tasks per phase
+/// (close to linear work; the twins do not depend on the partitions). An
 /// edge of a ring is a constraint; so is an edge with one triangle. Bridges and other diagonals
 /// have two triangles and may be flipped, so the result is the CDT of the polygon, not of its
 /// bridged boundary. Returns false when an edge has more than two triangles, or a corner is not one

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <memory>
+#include <utility>
 
 #include "cdt/borders.hpp"
 #include "cdt/mesh.hpp"
@@ -80,12 +81,47 @@ TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
                          profile.phases.begin(), profile.phases.end(),
                          [](const auto& p) { return p.name == "cdt adjacency: match"; });
                      ASSERT_NE(match, profile.phases.end());
-                     EXPECT_EQ(match->task_seconds.size(),
-                               std::min<std::size_t>(ctx.partitions, edges / mesh_edges_per_task));
+                     EXPECT_EQ(match->task_seconds.size(), mesh_parts(edges, ctx.partitions));
                    });
 }
 
-INSTANTIATE_TEST_SUITE_P(Families, MeshBuild, ::testing::Values("random", "random-holes", "star"));
+INSTANTIATE_TEST_SUITE_P(Families, MeshBuild,
+                         ::testing::Values("random", "random-holes", "star", "spiral"));
+
+TEST(MeshParts, APowerOfTwoAtLeastThePartitionsWhereEdgesFillThem) {
+  EXPECT_EQ(mesh_parts(100 * mesh_edges_per_task, 1), 1u);
+  EXPECT_EQ(mesh_parts(100 * mesh_edges_per_task, 3), 4u);
+  EXPECT_EQ(mesh_parts(100 * mesh_edges_per_task, 16), 16u);
+  EXPECT_EQ(mesh_parts(100 * mesh_edges_per_task, 4096), 64u);  // bit_floor(100)
+  EXPECT_EQ(mesh_parts(1000 * mesh_edges_per_task, 4096), max_mesh_parts);
+  EXPECT_EQ(mesh_parts(mesh_edges_per_task - 1, 16), 1u);
+}
+
+// Every vertex gets its own slot in its bucket, and the spiral's edges, whose low vertices all
+// lie in the first half of the numbering, fill the buckets evenly (a bucket per range of
+// vertices gave the first one all of them at 2 parts).
+TEST(VertexBuckets, EveryVertexItsOwnSlotAndTheSpiralsEdgesSpreadEvenly) {
+  const Triangulated t = triangulated(generate_polygon("spiral", 30'000, 5));
+  const std::size_t n = t.points.size();
+  for (std::size_t parts : {2u, 4u, 16u, 256u}) {
+    SCOPED_TRACE(parts);
+    const VertexBuckets buckets(n, parts);
+    std::vector<std::vector<std::uint8_t>> taken(parts, std::vector<std::uint8_t>(buckets.width()));
+    for (std::uint32_t v = 0; v < n; ++v) {
+      ASSERT_LT(buckets.bucket(v), parts);
+      ASSERT_LT(buckets.slot(v), buckets.width());
+      ASSERT_EQ(std::exchange(taken[buckets.bucket(v)][buckets.slot(v)], 1), 0) << v;
+    }
+    std::vector<std::size_t> edges(parts, 0);
+    for (const auto& tri : t.triangles)
+      for (std::size_t k = 0; k < 3; ++k)
+        ++edges[buckets.bucket(std::min(tri[k], tri[(k + 1) % 3]))];
+    const std::size_t total = 3 * t.triangles.size();
+    if (parts <= 16) {
+      EXPECT_LE(*std::max_element(edges.begin(), edges.end()) * parts, total * 3 / 2);
+    }
+  }
+}
 
 // Through the public API: the CDT of a polygon whose mesh is built in 16 buckets is valid
 // (the validator's exact Delaunay check) and the same at 1, 2, 3, 8 and 16 threads.
