@@ -121,40 +121,38 @@ struct BucketMatch {
   bool triangulation = true;         ///< false: an edge with more than two triangles
 };
 
-/// Every edge, 0 to count - 1, as a range (the one part's bucket).
-struct AllEdges {
-  std::size_t count;
-  struct Iterator {
-    std::uint32_t e;
-    std::uint32_t operator*() const { return e; }
-    Iterator& operator++() { return ++e, *this; }
-    bool operator!=(const Iterator& other) const { return e != other.e; }
-  };
-  std::size_t size() const { return count; }
-  Iterator begin() const { return {0}; }
-  Iterator end() const { return {static_cast<std::uint32_t>(count)}; }
-};
-
 /// One bucket (or, in one part, every edge): its edges counted by low over the bucket's
 /// vertex slots (slot(low) < width), each low's few edges sorted by high by insertion, as high <<
 /// 32 | edge (integers compared, no key looked up), then equal edges paired from those values
 /// alone. A ring edge makes its triangle's edge a constraint. The order, and so every twin, depends
 /// on neither the chunks nor the parts: within an edge, the lowest number first.
-template <class Edges, class Slot>
-BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const Edges& edges, Slot slot,
-                         std::size_t width) {
+/// The bucket's edges are list[0, count), or 0 to count - 1 where list is null (one part). One
+/// function for both: a second copy cost the WebAssembly module its size budget.
+BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const std::uint32_t* list,
+                         std::size_t count, const VertexBuckets& slots, std::size_t width) {
   std::vector<std::uint32_t> start(width + 1, 0);
-  std::vector<std::uint64_t> sorted(edges.size());
-  for (const std::uint32_t e : edges) ++start[slot(keys.low[e]) + 1];
+  std::vector<std::uint64_t> sorted(count), scratch;
+  // The test out of the loops; with one part a vertex's slot is the vertex.
+  const auto for_each_edge = [&](auto visit) {
+    if (list != nullptr) {
+      for (std::size_t i = 0; i < count; ++i) visit(list[i], slots.slot(keys.low[list[i]]));
+    } else {
+      for (std::uint32_t e = 0; e < count; ++e) visit(e, keys.low[e]);
+    }
+  };
+  for_each_edge([&](std::uint32_t, std::uint32_t slot) { ++start[slot + 1]; });
   for (std::size_t v = 0; v < width; ++v) start[v + 1] += start[v];
-  for (const std::uint32_t e : edges)
-    sorted[start[slot(keys.low[e])]++] = std::uint64_t{keys.high[e]} << 32 | e;
+  for_each_edge([&](std::uint32_t e, std::uint32_t slot) {
+    sorted[start[slot]++] = std::uint64_t{keys.high[e]} << 32 | e;
+  });
   BucketMatch m;
   for (std::size_t v = 0, from = 0; v < width; from = start[v++]) {
     const auto first = sorted.begin() + static_cast<std::ptrdiff_t>(from);
     const auto last = sorted.begin() + start[v];
-    if (last - first > 16) {
-      detail::sort(first, last);  // a vertex of high degree (a fan)
+    if (last - first > 1024) {
+      sort_by_high(&*first, &*last, scratch);  // a fan (the comb's base: 100,000 edges)
+    } else if (last - first > 16) {
+      detail::sort(first, last);
     } else {
       for (auto it = first; it != last; ++it)
         for (auto at = it; at != first && *(at - 1) > *at; --at) std::iter_swap(at - 1, at);
@@ -216,6 +214,26 @@ std::size_t mesh_parts(std::size_t edges, std::uint32_t partitions) {
                   std::bit_floor(std::max<std::size_t>(edges / mesh_edges_per_task, 1)));
 }
 
+void sort_by_high(std::uint64_t* first, std::uint64_t* last, std::vector<std::uint64_t>& scratch) {
+  constexpr unsigned digit_bits = 11;
+  const auto n = static_cast<std::size_t>(last - first);
+  std::uint64_t highest = 0;
+  for (const std::uint64_t* it = first; it != last; ++it) highest = std::max(highest, *it);
+  scratch.resize(n);
+  std::uint64_t* from = first;
+  std::uint64_t* to = scratch.data();
+  for (unsigned shift = 32; shift < 64 && (highest >> shift) != 0; shift += digit_bits) {
+    std::array<std::uint32_t, std::size_t{1} << digit_bits> place{};
+    const auto digit = [&](std::uint64_t x) { return (x >> shift) & ((1u << digit_bits) - 1); };
+    for (std::size_t i = 0; i < n; ++i) ++place[digit(from[i])];
+    std::uint32_t at = 0;
+    for (std::uint32_t& p : place) at += std::exchange(p, at);
+    for (std::size_t i = 0; i < n; ++i) to[place[digit(from[i])]++] = from[i];
+    std::swap(from, to);
+  }
+  if (from != first) std::copy(from, from + n, first);
+}
+
 EdgeEnds::EdgeEnds(const Point& p, const Point& q) : low(p), high(q) {
   if (lexicographic_less(q, p)) std::swap(low, high);
 }
@@ -246,8 +264,8 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
   std::vector<BucketMatch> matches(buckets.parts);
   if (buckets.parts == 1) {
     ctx.run_serial("cdt adjacency: match", [&] {
-      const auto same = [](std::uint32_t v) { return v; };
-      matches[0] = match_bucket(mesh, keys, AllEdges{edges}, same, points.size());
+      // One part: slot(v) is v.
+      matches[0] = match_bucket(mesh, keys, nullptr, edges, buckets.vertices, points.size());
     });
   } else {
     ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets); });
@@ -258,10 +276,9 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
       });
     });
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
-      const std::span<const std::uint32_t> bucket(buckets.edges.get() + buckets.begin[b],
-                                                  buckets.begin[b + 1] - buckets.begin[b]);
-      const auto slot = [&](std::uint32_t v) { return buckets.vertices.slot(v); };
-      matches[b] = match_bucket(mesh, keys, bucket, slot, buckets.vertices.width());
+      matches[b] = match_bucket(mesh, keys, buckets.edges.get() + buckets.begin[b],
+                                buckets.begin[b + 1] - buckets.begin[b], buckets.vertices,
+                                buckets.vertices.width());
     });
   }
   bool built = true;

@@ -79,6 +79,12 @@ class VertexBuckets {
   std::size_t width_ = 0;
 };
 
+/// Sorts a fan's `high << 32 | edge` values by high alone, 11 bits a pass from the lowest (a
+/// comparison sort took the comb's 100,000-edge fans 8 ms), with `scratch` as large. The order
+/// within one high is left as it came: the twins do not depend on it (two half-edges of one edge
+/// pair either way round).
+void sort_by_high(std::uint64_t* first, std::uint64_t* last, std::vector<std::uint64_t>& scratch);
+
 /// Fills mesh.twin for `triangles`: half-edges and the polygon's ring edges are matched by their
 /// endpoints (caller indices), sorted in buckets by the lower one, in mesh_parts tasks per phase
 /// (close to linear work; the twins do not depend on the partitions). An

@@ -86,7 +86,54 @@ TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Families, MeshBuild,
-                         ::testing::Values("random", "random-holes", "star", "spiral"));
+                         ::testing::Values("random", "random-holes", "star", "spiral", "comb"));
+
+// A convex polygon triangulated as one fan from vertex 0: its thousands of edges at one low
+// vertex take the radix sort (one pass of 11 bits at 2,000 vertices, two at 5,000).
+TEST(MeshBuild, FanFromOneVertexPairsEveryDiagonal) {
+  for (std::uint32_t n : {2'000u, 5'000u}) {
+    SCOPED_TRACE(n);
+    Ring ring{{0, 1e9}};  // the apex, then n points on a parabola: convex, counterclockwise
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const double x = static_cast<double>(i);
+      ring.push_back({x, x * x});
+    }
+    Triangulated t{{ring}, ring, {}, {}};
+    const std::vector<std::uint32_t> offsets{0, n + 1};
+    std::vector<Diagnostic> diagnostics;
+    ASSERT_EQ(clean_polygon(InputPolygon(PolygonView{t.points, offsets}), t.clean, diagnostics),
+              Status::ok);
+    // In a scrambled order, so that no edge's two uses come together unsorted.
+    for (std::uint32_t k = 0; k + 1 < n; ++k) {
+      const std::uint32_t i = 1 + (k * 7919) % (n - 1);
+      t.triangles.push_back({0, i, i + 1});
+    }
+    for (const RunContext& ctx : {RunContext{}, RunContext{nullptr, 16, nullptr}}) {
+      Mesh mesh;
+      ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, ctx));
+      expect_twins_right(mesh, n + 1);
+      EXPECT_EQ(mesh.interior_edges, n - 2);
+    }
+  }
+}
+
+TEST(SortByHigh, OrdersByTheHighWordAndKeepsEveryValue) {
+  std::uint64_t state = 88172645463325252u;
+  const auto next = [&] { return state ^= state << 13, state ^= state >> 7, state ^= state << 17; };
+  std::vector<std::uint64_t> scratch;
+  for (unsigned bits : {1u, 11u, 12u, 22u, 23u, 32u}) {
+    SCOPED_TRACE(bits);
+    std::vector<std::uint64_t> values(3000);
+    for (std::uint64_t& v : values) v = (next() >> (64 - bits)) << 32 | (next() >> 40);
+    std::vector<std::uint64_t> sorted = values;
+    sort_by_high(sorted.data(), sorted.data() + sorted.size(), scratch);
+    EXPECT_TRUE(std::is_sorted(sorted.begin(), sorted.end(),
+                               [](std::uint64_t a, std::uint64_t b) { return a >> 32 < b >> 32; }));
+    std::sort(values.begin(), values.end());
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(sorted, values);
+  }
+}
 
 TEST(MeshParts, APowerOfTwoAtLeastThePartitionsWhereEdgesFillThem) {
   EXPECT_EQ(mesh_parts(100 * mesh_edges_per_task, 1), 1u);
