@@ -36,6 +36,7 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   redone_ = 0;
   edges_split_ = false;
   repeated_.clear();
+  changed_cells_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
   if (!in_parts || polygon.ring_count() - 1 <= few_holes) {
@@ -121,9 +122,11 @@ void HoleBridger::find_all(const RunContext& ctx) {
 void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel,
                              std::vector<std::uint32_t>& unjoined) {
   bool stale = false;  // found_ was computed with a ring that is now left out
+  if (found_in_parallel) changed_cells_.assign(node_cells_.head.size(), 0);
   for (std::size_t k = 0; k < holes_.size(); ++k) {
     const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
     Attachment at;
+    bool node_known = true;  // at.node is what node_at would say now
     if (!found_in_parallel) {
       at = find(hole, rank);
     } else {
@@ -132,15 +135,18 @@ void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel
           (!at.touches && crossed_by_bridge(b_->pos[hole], at.hit))) {
         at = find(hole, rank);
         ++redone_;
+      } else {
+        const Point& p = at.touches ? b_->pos[hole] : at.target;
+        node_known = changed_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))] == 0;
       }
     }
     // Nothing to the left: the hole lies outside the outer ring. A target the splice could
     // not find (no merged node there: the search and the splice disagree) is found again
     // serially rather than trusted, and a hole is never spliced blindly.
-    bool joined = attach(hole, at, rank);
+    bool joined = attach(hole, at, rank, node_known);
     if (!joined && found_in_parallel) {
       ++redone_;
-      joined = attach(hole, find(hole, rank), rank);
+      joined = attach(hole, find(hole, rank), rank, true);
     }
     if (!joined) {
       unjoined.push_back(hole);
@@ -153,11 +159,14 @@ void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel
 HoleBridger::Attachment HoleBridger::find(std::uint32_t hole, std::uint32_t rank) const {
   Attachment at;
   const Point h = b_->pos[hole];
-  at.touches = node_at(h, b_->pos[b_->next[hole]], rank) != UINT32_MAX;
+  at.node = node_at(h, b_->pos[b_->next[hole]], rank);
+  at.touches = at.node != UINT32_MAX;
   if (at.touches) return at;
   at.hit = cast_left(h, rank);
-  if (at.hit.touching_edge == UINT32_MAX && at.hit.edge != UINT32_MAX)
+  if (at.hit.touching_edge == UINT32_MAX && at.hit.edge != UINT32_MAX) {
     at.target = visible_target(h, at.hit, rank);
+    at.node = node_at(at.target, h, rank);
+  }
   return at;
 }
 
@@ -185,16 +194,19 @@ bool HoleBridger::crossed_by_bridge(const Point& h, const RayHit& hit) const {
 }
 
 /// Splices the hole where `at` says; false (nothing changed) if the ray hit nothing or no
-/// merged node is at the target.
-bool HoleBridger::attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank) {
+/// merged node is at the target. `node_known`: at.node is still what node_at would find (no
+/// splice since the search changed a node in its cell); else it is looked up again.
+bool HoleBridger::attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank,
+                         bool node_known) {
   const Point h = b_->pos[hole];
   if (!at.touches && at.hit.touching_edge != UINT32_MAX) {
     splice_into_edge(at.hit.touching_edge, hole);
     return true;
   }
   if (!at.touches && at.hit.edge == UINT32_MAX) return false;
-  const std::uint32_t target =
-      at.touches ? node_at(h, b_->pos[b_->next[hole]], rank) : node_at(at.target, h, rank);
+  const std::uint32_t target = node_known   ? at.node
+                               : at.touches ? node_at(h, b_->pos[b_->next[hole]], rank)
+                                            : node_at(at.target, h, rank);
   if (target == UINT32_MAX) return false;
   if (at.touches)
     splice_touching(target, hole);
@@ -303,8 +315,18 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32
   return best;
 }
 
+/// A splice turned node's sector or put a copy at its position: what the search found in its
+/// cell is looked up again.
+void HoleBridger::mark_changed(std::uint32_t node) {
+  if (changed_cells_.empty()) return;  // a serial join: each hole is found right before
+  const Point& p = b_->pos[node];
+  changed_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))] = 1;
+}
+
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
+  mark_changed(target);
+  mark_changed(hole);
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
   repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
@@ -322,6 +344,8 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
 /// The hole shares a point with the merged boundary: link the rings there, no bridge needed.
 void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
+  mark_changed(target);
+  mark_changed(hole);
   const std::uint32_t after_target = b.next[target], after_hole = b.next[hole];
   repeated_.insert(repeated_.end(), {target, hole});
   b.link(target, after_hole);
@@ -337,6 +361,7 @@ void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
 void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
+  for (const std::uint32_t node : {start, end, hole}) mark_changed(node);
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
   repeated_.insert(repeated_.end(), {hole, entry});
   b.link(start, entry);

@@ -70,6 +70,9 @@ class HoleBridger {
     bool touches = false;  ///< a merged node lies at the hole's vertex
     RayHit hit;
     Point target;  ///< the visible vertex, when the ray hit an edge
+    /// The merged node to splice at (node_at of the hole's vertex, or of target), as the
+    /// search saw it: still right while no splice changed a node in its cell.
+    std::uint32_t node = UINT32_MAX;
   };
 
   /// The grid's contents: the nodes and edges of every ring (ids: the ring's node numbers,
@@ -119,7 +122,8 @@ class HoleBridger {
   bool merged(std::uint32_t item, std::uint32_t rank) const { return rank_[item] < rank; }
   Attachment find(std::uint32_t hole, std::uint32_t rank) const;
   bool crossed_by_bridge(const Point& h, const RayHit& hit) const;
-  bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank);
+  bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known);
+  void mark_changed(std::uint32_t node);
   void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
   void insert_node(std::uint32_t node);
   std::uint32_t insert_edge(std::uint32_t start);
@@ -145,6 +149,9 @@ class HoleBridger {
   /// In parts, per list (nodes, edges): its pairs by band, and where each band starts.
   FillVector<CellPair> by_band_[2];
   std::vector<std::uint32_t> band_start_[2];
+  /// In the parallel splice: the node cells where a splice added a node or turned a node's
+  /// sector (a node found there by the search must be looked up again).
+  std::vector<std::uint8_t> changed_cells_;
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   std::size_t redone_ = 0;
   std::vector<std::uint32_t> repeated_;

@@ -193,6 +193,17 @@ TEST(BridgeInParts, HolesTouchingTheShellAndEachOther) {
   expect_same_in_parts(polygon);
 }
 
+TEST(BridgeInParts, TwoHolesTouchingTheShellAtOneVertex) {
+  // Both holes touch the shell at (0, 500); the first one's splice turns the shell node's
+  // sector there, so the second must splice at the first hole's node, not at the shell node
+  // the parallel search found (fails with the search's node kept after the first splice).
+  Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}, {0, 500}}};
+  polygon.push_back({{0, 500}, {200, 700}, {200, 600}});  // leaves up-right
+  polygon.push_back({{0, 500}, {200, 450}, {200, 400}});  // leaves below the first
+  for (int k = 0; k < 6; ++k) polygon.push_back(square(500 + 60.0 * k, 100, 20));
+  expect_same_in_parts(polygon);
+}
+
 TEST(BridgeInParts, ChainsOfHoles) {
   // Thin holes in a staircase: every ray hits the hole before it, and bridges pile up.
   Polygon polygon{outer(2000)};
