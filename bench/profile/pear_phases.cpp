@@ -10,6 +10,9 @@
 // longest task), k the configuration's partitions (else its threads), and the header their sum:
 // the phases that bound the work/span projection (docs/scaling.md).
 //
+// PEAR_PHASES_TASKS=NAME also prints every task's time (ms) of the phases named NAME, in the
+// last run: "clip chains" shows how evenly the chains split the work.
+//
 // Cache misses per phase: run one configuration under cachegrind (bench/profile/README.md).
 #include <algorithm>
 #include <chrono>
@@ -91,6 +94,13 @@ void profile(const pear::Polygon& polygon, const Config& config, int runs) {
         wall, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (result.status != pear::Status::ok)
       std::fprintf(stderr, "%s: status %s\n", config.name, pear::to_string(result.status));
+    if (const char* want = std::getenv("PEAR_PHASES_TASKS"); want && run == runs - 1)
+      for (const auto& phase : profile.phases)
+        if (phase.name == want) {
+          std::printf("  [%s]", want);
+          for (double t : phase.task_seconds) std::printf(" %.2f", 1e3 * t);
+          std::printf("\n");
+        }
     // Phases that repeat (rounds) are summed per name within a run.
     std::map<std::string, PhaseTimes> run_phases;
     for (const auto& phase : profile.phases) {
