@@ -39,7 +39,9 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   changed_cells_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
-  if (!in_parts || polygon.ring_count() - 1 <= few_holes) {
+  // Without threads the joining in parts would give the same boundary at more cost (and
+  // code: the .wasm).
+  if (!PEAR_HAS_THREADS || !in_parts || polygon.ring_count() - 1 <= few_holes) {
     ctx.run_serial("bridge holes", [&] {
       order_holes(polygon, ctx, false);
       build_grid(polygon, ctx, false);
@@ -122,6 +124,7 @@ void HoleBridger::find_all(const RunContext& ctx) {
 void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel,
                              std::vector<std::uint32_t>& unjoined) {
   bool stale = false;  // found_ was computed with a ring that is now left out
+  found_in_parallel = PEAR_HAS_THREADS && found_in_parallel;  // the .wasm keeps no such path
   if (found_in_parallel) changed_cells_.assign(node_cells_.head.size(), 0);
   for (std::size_t k = 0; k < holes_.size(); ++k) {
     const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
@@ -318,7 +321,8 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32
 /// A splice turned node's sector or put a copy at its position: what the search found in its
 /// cell is looked up again.
 void HoleBridger::mark_changed(std::uint32_t node) {
-  if (changed_cells_.empty()) return;  // a serial join: each hole is found right before
+  // A serial join: each hole is found right before its splice.
+  if (!PEAR_HAS_THREADS || changed_cells_.empty()) return;
   const Point& p = b_->pos[node];
   changed_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))] = 1;
 }
