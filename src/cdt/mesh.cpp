@@ -122,12 +122,12 @@ struct BucketMatch {
 };
 
 /// One bucket (or, in one part, every edge): its edges counted by low over the bucket's
-/// vertex slots (slot(low) < width), each low's few edges sorted by high by insertion, as high <<
-/// 32 | edge (integers compared, no key looked up), then equal edges paired from those values
-/// alone. A ring edge makes its triangle's edge a constraint. The order, and so every twin, depends
-/// on neither the chunks nor the parts: within an edge, the lowest number first.
-/// The bucket's edges are list[0, count), or 0 to count - 1 where list is null (one part). One
-/// function for both: a second copy cost the WebAssembly module its size budget.
+/// vertex slots (slot(low) < width), each low's few edges sorted by high by insertion (a fan's
+/// by sort_by_high), as high << 32 | edge (integers compared, no key looked up), then equal
+/// edges paired from those values alone. A ring edge makes its triangle's edge a constraint.
+/// Every twin depends on neither the chunks nor the parts. The bucket's edges are
+/// list[0, count), or 0 to count - 1 where list is null (one part): one function for both, as a
+/// second copy cost the WebAssembly module its size budget.
 BucketMatch match_bucket(Mesh& mesh, const EdgeKeys& keys, const std::uint32_t* list,
                          std::size_t count, const VertexBuckets& slots, std::size_t width) {
   std::vector<std::uint32_t> start(width + 1, 0);

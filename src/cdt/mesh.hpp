@@ -51,8 +51,8 @@ inline constexpr std::size_t mesh_edges_per_task = 4096;
 /// bucket on the stack).
 inline constexpr std::size_t max_mesh_parts = 256;
 
-/// How many tasks build_mesh cuts each phase into: a power of two (buckets are picked by bits),
-/// the partitions' rounded up, at most one per mesh_edges_per_task edges and max_mesh_parts.
+/// How many tasks build_mesh cuts each phase into: the partitions rounded up to a power of two
+/// (buckets are picked by bits), at most one per mesh_edges_per_task edges and max_mesh_parts.
 std::size_t mesh_parts(std::size_t edges, std::uint32_t partitions);
 
 /// Which of `parts` buckets (a power of two) an edge goes to by its low vertex: blocks of at
