@@ -195,7 +195,9 @@ std::vector<std::uint32_t> TouchingPoints::cycles(const Boundary& b, std::uint32
                                                   const std::vector<std::uint32_t>& skip,
                                                   const RunContext& ctx, std::size_t tasks) {
   std::vector<std::uint32_t> entries;
-#if PEAR_HAS_THREADS
+#if !PEAR_HAS_THREADS
+  (void)tasks;  // one walk: no runs to find in tasks
+#else
   std::vector<std::uint32_t> jumps;
   if (tasks > 1 && find_link_jumps(b, ctx, "bridge: link jumps", tasks, jumps,
                                    [](std::size_t, std::size_t) {})) {

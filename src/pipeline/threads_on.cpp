@@ -23,6 +23,9 @@ std::uint32_t worker_limit() {
   return std::max(16u, 4 * hardware_threads());
 }
 
+}  // namespace
+
+/// Outside the anonymous namespace: Workers::State, which has external linkage, holds one.
 class ExecutorRunner final : public TaskRunner {
  public:
   Executor* executor = nullptr;
@@ -31,6 +34,8 @@ class ExecutorRunner final : public TaskRunner {
     parallel_for(*executor, std::size_t{0}, count, 1, task);
   }
 };
+
+namespace {
 
 std::mutex& pool_mutex() {
   static std::mutex mutex;

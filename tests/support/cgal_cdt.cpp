@@ -10,14 +10,18 @@
 #include <utility>
 
 namespace pear::testing {
-namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-/// The input point number; CGAL's own crossing points (Steiner points) keep `none`.
-struct PointId {
+/// The input point number; CGAL's own crossing points (Steiner points) keep `none`. Outside the
+/// anonymous namespace: CgalCdt::Input, which has external linkage, holds them.
+struct CgalPointId {
   static constexpr std::uint32_t none = UINT32_MAX;
   std::uint32_t index = none;
 };
+
+namespace {
+
+using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using PointId = CgalPointId;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<PointId, Kernel>;
 using LevelFaceBase = CGAL::Triangulation_face_base_with_info_2<int, Kernel>;
 using FaceBase = CGAL::Constrained_triangulation_face_base_2<Kernel, LevelFaceBase>;
