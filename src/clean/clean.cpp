@@ -428,7 +428,8 @@ bool clean_in_parts(const InputPolygon& in, CleanPolygon& out, const RunContext&
     walk_chunk(
         in, closing, c, [](std::size_t) {},
         [&](std::size_t, const Point& p, bool keep) {
-          all_in_range &= coordinate_in_range(p.x) & coordinate_in_range(p.y);
+          all_in_range &= static_cast<unsigned>(coordinate_in_range(p.x)) &
+                          static_cast<unsigned>(coordinate_in_range(p.y));
           kept += keep;
         });
     start[c + 1] = kept;
