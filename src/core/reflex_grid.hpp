@@ -117,9 +117,7 @@ class ReflexGrid {
     });
   }
 
-  std::size_t cell_of(const Point& p) const {
-    return frame_.cell(frame_.column(p.x), frame_.row(p.y));
-  }
+  std::size_t cell_of(const Point& p) const { return frame_.cell_of(p); }
 
   GridFrame frame_;
   Point lo_{INFINITY, INFINITY}, hi_{-INFINITY, -INFINITY};  ///< the built nodes' bounding box

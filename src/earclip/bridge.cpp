@@ -140,7 +140,7 @@ void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel
         ++redone_;
       } else {
         const Point& p = at.touches ? b_->pos[hole] : at.target;
-        node_known = changed_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))] == 0;
+        node_known = changed_cells_[frame_.cell_of(p)] == 0;
       }
     }
     // Nothing to the left: the hole lies outside the outer ring. A target the splice could
@@ -227,7 +227,7 @@ void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
 /// A node a bridge adds (a copy): merged at once.
 void HoleBridger::insert_node(std::uint32_t node) {
   const Point& p = b_->pos[node];
-  node_cells_.add(frame_.cell(frame_.column(p.x), frame_.row(p.y)), node);
+  node_cells_.add(frame_.cell_of(p), node);
   while (rank_.size() <= node) rank_.push_back(0);  // ids grow one at a time
 }
 
@@ -247,7 +247,7 @@ std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
 /// merged node lies at p. Falls back to any node at p when no sector contains it strictly.
 std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards, std::uint32_t rank) const {
   std::uint32_t any = UINT32_MAX, inside = UINT32_MAX;
-  node_cells_.for_each(frame_.cell(frame_.column(p.x), frame_.row(p.y)), [&](std::uint32_t node) {
+  node_cells_.for_each(frame_.cell_of(p), [&](std::uint32_t node) {
     if (inside != UINT32_MAX || !merged(node, rank) || !(b_->pos[node] == p)) return;
     if (b_->sector_contains(node, towards)) inside = node;
     if (any == UINT32_MAX) any = node;
@@ -324,7 +324,7 @@ void HoleBridger::mark_changed(std::uint32_t node) {
   // A serial join: each hole is found right before its splice.
   if (!PEAR_HAS_THREADS || changed_cells_.empty()) return;
   const Point& p = b_->pos[node];
-  changed_cells_[frame_.cell(frame_.column(p.x), frame_.row(p.y))] = 1;
+  changed_cells_[frame_.cell_of(p)] = 1;
 }
 
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {

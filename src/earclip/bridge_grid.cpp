@@ -54,9 +54,7 @@ void HoleBridger::fill_cells(std::uint32_t nodes) {
   };
   pairs_.clear();
   for (std::uint32_t v = 0; v < nodes; ++v)
-    pairs_.push_back({static_cast<std::uint32_t>(
-                          frame_.cell(frame_.column(b_->pos[v].x), frame_.row(b_->pos[v].y))),
-                      v});
+    pairs_.push_back({static_cast<std::uint32_t>(frame_.cell_of(b_->pos[v])), v});
   fill(node_cells_);
   pairs_.clear();
   for (std::uint32_t v = 0; v < nodes; ++v)
@@ -109,7 +107,7 @@ void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunCont
     for (std::uint32_t v = first(chunk_of_ids); v < first(chunk_of_ids + 1); ++v) {
       const Point& p = b_->pos[v];
       if (t < tasks)
-        list(frame_.cell(frame_.column(p.x), frame_.row(p.y)), v);
+        list(frame_.cell_of(p), v);
       else
         frame_.for_each_cell_on_segment(p, b_->pos[b_->next[v]],
                                         [&](std::size_t cell) { list(cell, v); });

@@ -47,6 +47,8 @@ struct GridFrame {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(nx) +
            static_cast<std::size_t>(column);
   }
+  /// The cell p lies in (clamped to the grid).
+  std::size_t cell_of(const Point& p) const { return cell(column(p.x), row(p.y)); }
   std::size_t cell_count() const { return static_cast<std::size_t>(nx) * ny; }
 
   /// Calls visit(first_cell, last_cell) for the cells of each row that triangle (a, b, c) may
