@@ -5,7 +5,7 @@
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
 //   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1
-//   cdt16t1 mc16t1 dc16t1 auto4t1 auto16t1 auto16t1cdt mc2 dc2 auto2 cdt2
+//   cdt16t1 pc16t4 pc16t8 pc16t16 cdt16t16 mc16t1 dc16t1 auto4t1 auto16t1 auto16t1cdt mc2 dc2 auto2 cdt2
 // Each phase also shows its share of the time on k threads by Brent's bound, max(work / k,
 // longest task), k the configuration's partitions (else its threads), and the header their sum:
 // the phases that bound the work/span projection (docs/scaling.md).
@@ -57,6 +57,16 @@ std::vector<Config> configs() {
   add("pc16t1", Algorithm::partition_and_cut, 1, false);
   all.back().options.partitions = 16;
   add("cdt16t1", Algorithm::sequential, 1, true);  // the CDT's own phases at 16 partitions
+  all.back().options.partitions = 16;
+  // 16 partitions on more threads: a task's time against pc16t1's shows what running beside
+  // other tasks costs on this machine (shared caches, memory bandwidth, SMT siblings).
+  add("pc16t4", Algorithm::partition_and_cut, 4, false);
+  all.back().options.partitions = 16;
+  add("pc16t8", Algorithm::partition_and_cut, 8, false);
+  all.back().options.partitions = 16;
+  add("pc16t16", Algorithm::partition_and_cut, 16, false);
+  all.back().options.partitions = 16;
+  add("cdt16t16", Algorithm::sequential, 16, true);
   all.back().options.partitions = 16;
   add("mc16t1", Algorithm::mark_and_cut, 1, false);
   all.back().options.partitions = 16;
