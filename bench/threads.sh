@@ -7,9 +7,11 @@
 #
 #   bench/threads.sh [--build DIR] [--rounds N] [--budget SECONDS]
 #   bench/threads.sh --pack DIR      a folder to copy to another x86-64 Linux machine (glibc 2.36
-#                                    or newer): the binary, the libraries it needs beyond glibc,
+#                                    or newer): the binaries, the libraries they need beyond glibc,
 #                                    the inputs and run.sh; `bash DIR/run.sh OUT` there writes
-#                                    OUT/threads.json and OUT/machine.json
+#                                    OUT/threads.json and OUT/machine.json; `bash DIR/contention.sh
+#                                    OUT` there, first, what running side by side costs
+#                                    (bench/profile/contention.sh)
 #   bench/threads.sh --report OUT    docs/results/DATE-threads-*.json from such an OUT, and the
 #                                    table (bench/report/threads.py)
 #
@@ -50,7 +52,7 @@ fi
 [[ -f $build/build.ninja ]] ||
   meson setup "$build" "$root" --buildtype=release -Dbench=enabled -Dtests=disabled \
     -Dcli=disabled -Dfuzz=disabled
-ninja -C "$build" bench/profile/pear_threads
+ninja -C "$build" bench/profile/pear_threads bench/profile/pear_phases
 corpus=${PEAR_BENCH_CORPUS:-$root/../shared/corpus}
 coasts="borneo new_guinea australia baffin_island greenland south_america eurasia"
 synthetic="koch-8 star-100000 comb-100000 spiral-100000 holes-100x100"
@@ -63,7 +65,8 @@ else
   local_run=0
 fi
 mkdir -p "$pack/lib" "$pack/inputs"
-cp "$build/bench/profile/pear_threads" "$pack/"
+cp "$build/bench/profile/pear_threads" "$build/bench/profile/pear_phases" "$pack/"
+cp "$root/bench/profile/contention.sh" "$pack/"
 # Every library but glibc's own, so that the folder runs where pear was never built.
 ldd "$build/bench/profile/pear_threads" | awk '/=> \// {print $3}' | while read -r lib; do
   case $(basename "$lib") in
