@@ -4,7 +4,8 @@
 // configurations of one input run in interleaved rounds (each round in its own shuffled order,
 // after one untimed round) and each keeps the median of its rounds: ratios compare the same
 // moments. Shuffled, not rotated: a rotation keeps each configuration after the same one, and
-// on a 16-core VM `top` ran up to 1.34x slower than `auto_t1`, the same computation.
+// on a 16-core VM `top` ran up to 1.34x slower than `auto_t1`. (`auto_t1` is the sequential
+// engine below 300,000 vertices; from there on it clips in divide-and-conquer's parts, faster.)
 //
 //   pear_threads [--threads 1,2,4,8,16] [--rounds 7] [--phases] [--configs NAME,...] INPUT...
 //   (--rounds 0 with --phases: the profiled runs only; --configs keeps the configurations
