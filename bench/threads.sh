@@ -66,7 +66,7 @@ else
 fi
 mkdir -p "$pack/lib" "$pack/inputs"
 cp "$build/bench/profile/pear_threads" "$build/bench/profile/pear_phases" "$pack/"
-cp "$root/bench/profile/contention.sh" "$pack/"
+cp "$root/bench/profile/contention.sh" "$root/bench/profile/unpack_inputs.py" "$pack/"
 # Every library but glibc's own, so that the folder runs where pear was never built.
 ldd "$build/bench/profile/pear_threads" | awk '/=> \// {print $3}' | while read -r lib; do
   case $(basename "$lib") in
@@ -79,7 +79,14 @@ c++ --version | head -1 > "$pack/built_with.txt"
 inputs=()
 for name in $coasts; do
   file=$(ls "$corpus/coast/${name}"_gshhg_*.json.gz 2>/dev/null | head -1 || true)
-  [[ -n $file ]] && { cp "$file" "$pack/inputs/"; inputs+=("inputs/$(basename "$file")"); }
+  [[ -n $file ]] || continue
+  # xz, where there is one: a lent machine takes 64 MiB with the repository (run.sh unpacks).
+  if [[ $local_run -eq 0 ]] && command -v xz > /dev/null; then
+    gzip -dc "$file" | xz -6 -T0 > "$pack/inputs/$(basename "${file%.gz}").xz"
+  else
+    cp "$file" "$pack/inputs/"
+  fi
+  inputs+=("inputs/$(basename "$file")")
 done
 for name in $synthetic; do
   if [[ -f $corpus/synthetic/$name.json ]]; then
@@ -101,6 +108,7 @@ here=\$(cd "\$(dirname "\$0")" && pwd)
 out=\${1:?usage: run.sh OUT [ROUNDS] [BUDGET]}; rounds=\${2:-$rounds}; budget=\${3:-$budget}
 mkdir -p "\$out/parts"
 export LD_LIBRARY_PATH="\$here/lib"
+python3 "\$here/unpack_inputs.py" "\$here/inputs"
 python3 "\$here/machine.py" threads "$(git -C "$root" rev-parse --short HEAD)" > "\$out/machine.json"
 # The compiler that built the binary (machine.py names the one on this machine, if any).
 python3 -c 'import json, sys; m = json.load(open(sys.argv[1])); m["built_with"] = open(sys.argv[2]).read().strip(); json.dump(m, open(sys.argv[1], "w"), indent=1)' "\$out/machine.json" "\$here/built_with.txt"

@@ -15,13 +15,7 @@ set -u
 inputs=${1:?usage: ab_threads.sh INPUTS A B OUT}; a=${2:?}; b=${3:?}; out=${4:?}
 configs=${CONFIGS:-top,auto_t2,auto_t16,cdt,auto_t2_cdt,auto_t16_cdt}
 mkdir -p "$out/parts"
-python3 - "$inputs" <<'PY'
-import glob, gzip, lzma, os, shutil, sys
-for x in glob.glob(sys.argv[1] + "/*.json.xz"):
-    if not os.path.exists(x[:-3] + ".gz"):
-        with lzma.open(x) as src, gzip.open(x[:-3] + ".gz", "wb", compresslevel=1) as dst:
-            shutil.copyfileobj(src, dst, 1 << 20)
-PY
+python3 "$(dirname "$0")/unpack_inputs.py" "$inputs"
 start=$SECONDS
 for file in "$inputs"/*.json.gz; do
   name=$(basename "$file" .json.gz)

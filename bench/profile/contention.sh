@@ -8,20 +8,14 @@
 #      chain's clip time listed: the same tasks, run alone and side by side;
 #   3. the same with malloc told to keep freed memory (no page faults from returned memory);
 #   4. 8 threads on 8 distinct physical cores (taskset), where the machine has SMT.
-# The inputs: Australia and Greenland from DIR/inputs (.json.gz, or .json.xz decompressed here).
+# The inputs: Australia and Greenland from DIR/inputs.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 out=${1:?usage: contention.sh OUT}; mkdir -p "$out"
 copies=${COPIES:-"1 8 16"}
 exec > >(tee "$out/contention.log") 2>&1
 date -u; nproc; lscpu | grep -v -e Vulnerab -e '^Flags'; cat /proc/loadavg
-python3 - "$here/inputs" <<'PY'
-import glob, gzip, lzma, os, shutil, sys
-for x in glob.glob(sys.argv[1] + "/*.json.xz"):
-    if not os.path.exists(x[:-3] + ".gz"):
-        with lzma.open(x) as src, gzip.open(x[:-3] + ".gz", "wb", compresslevel=1) as dst:
-            shutil.copyfileobj(src, dst, 1 << 20)
-PY
+python3 "$here/unpack_inputs.py" "$here/inputs"
 export LD_LIBRARY_PATH=$here/lib
 ph=$here/pear_phases
 A=$(ls "$here"/inputs/australia_*.json.gz | head -1)
