@@ -231,16 +231,26 @@ void HoleBridger::insert_node(std::uint32_t node) {
   while (rank_.size() <= node) rank_.push_back(0);  // ids grow one at a time
 }
 
-/// An edge a bridge adds, from `start`: a new id, merged at once.
-std::uint32_t HoleBridger::insert_edge(std::uint32_t start) {
+/// An edge a bridge adds, from `start`: a new id, merged at once (entered in no cell yet).
+std::uint32_t HoleBridger::new_edge(std::uint32_t start) {
   const auto id = static_cast<std::uint32_t>(edge_start_.size());
   edge_start_.push_back(start);
   while (rank_.size() <= id) rank_.push_back(0);
   if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
-  frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]],
-                                  [&](std::size_t cell) { edge_cells_.add(cell, id); });
   return id;
+}
+
+/// Edges a bridge adds, entered in every cell they cross: the one from `start`, and the one
+/// from `back` unless that is UINT32_MAX (a bridge's other side: the same segment the other
+/// way, so one walk of the cells enters both, each cell's list ending as two walks leave it).
+void HoleBridger::insert_edges(std::uint32_t start, std::uint32_t back) {
+  const std::uint32_t first = new_edge(start);
+  const std::uint32_t second = back == UINT32_MAX ? UINT32_MAX : new_edge(back);
+  frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]], [&](std::size_t cell) {
+    edge_cells_.add(cell, first);
+    if (second != UINT32_MAX) edge_cells_.add(cell, second);
+  });
 }
 
 /// The merged node at exactly p whose interior sector contains `towards`; UINT32_MAX if no
@@ -339,10 +349,9 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
   edge_start_[old_edge] = target_copy;
   out_edge_[target_copy] = old_edge;
   out_edge_[target] = UINT32_MAX;
-  insert_edge(target);
+  insert_edges(target, hole_copy);
   insert_node(target_copy);
   insert_node(hole_copy);
-  insert_edge(hole_copy);
 }
 
 /// The hole shares a point with the merged boundary: link the rings there, no bridge needed.
@@ -378,7 +387,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   if (hole_edge != UINT32_MAX) edge_start_[hole_edge] = entry, out_edge_[entry] = hole_edge;
   out_edge_[hole] = UINT32_MAX;
   insert_node(entry);
-  insert_edge(hole);
+  insert_edges(hole, UINT32_MAX);
   edges_split_ = true;  // edge `edge` is shorter now: what the parallel search saw of it is stale
 }
 

@@ -126,7 +126,8 @@ class HoleBridger {
   void mark_changed(std::uint32_t node);
   void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
   void insert_node(std::uint32_t node);
-  std::uint32_t insert_edge(std::uint32_t start);
+  std::uint32_t new_edge(std::uint32_t start);
+  void insert_edges(std::uint32_t start, std::uint32_t back);
   std::uint32_t node_at(const Point& p, const Point& towards, std::uint32_t rank) const;
   RayHit cast_left(const Point& h, std::uint32_t rank) const;
   Point visible_target(const Point& h, const RayHit& hit, std::uint32_t rank) const;
