@@ -43,15 +43,17 @@ void merge_range(const T* a, std::size_t na, const T* b, std::size_t nb, std::si
   std::copy(b + j, b + j_end, o);
 }
 
-/// Sorts v by `less` in ctx.partitions tasks (a power of two of them, each at least
-/// `min_per_task` elements), recorded as the phases `sort_phase` and `merge_phase`; in one
-/// serial phase when that leaves one task, and without threads in none (the caller's).
-template <class T, class Less>
+/// Sorts v by `less` in ctx.partitions tasks, or `max_tasks` when given (a power of two of
+/// them, each at least `min_per_task` elements), recorded as the phases `sort_phase` and
+/// `merge_phase`; in one serial phase when that leaves one task, and without threads in none
+/// (the caller's).
+template <class T, class Alloc, class Less>
 void sort_in_parts(const RunContext& ctx, const char* sort_phase, const char* merge_phase,
-                   std::vector<T>& v, Less less, std::size_t min_per_task = 1024) {
+                   std::vector<T, Alloc>& v, Less less, std::size_t min_per_task = 1024,
+                   std::size_t max_tasks = 0) {
   const std::size_t n = v.size();
-  const std::size_t most =
-      std::min<std::size_t>(ctx.partitions, n / std::max<std::size_t>(1, min_per_task));
+  const std::size_t most = std::min<std::size_t>(max_tasks ? max_tasks : ctx.partitions,
+                                                 n / std::max<std::size_t>(1, min_per_task));
   const std::size_t tasks = !PEAR_HAS_THREADS || most < 2 ? 1 : std::bit_floor(most);
   if (tasks < 2) {
     ctx.run_serial_if_threads(sort_phase, [&] { detail::sort(v.begin(), v.end(), less); });
@@ -62,8 +64,8 @@ void sort_in_parts(const RunContext& ctx, const char* sort_phase, const char* me
     detail::sort(v.begin() + static_cast<std::ptrdiff_t>(cut(t, tasks)),
                  v.begin() + static_cast<std::ptrdiff_t>(cut(t + 1, tasks)), less);
   });
-  std::vector<T> other(n);
-  std::vector<T>*from = &v, *to = &other;
+  std::vector<T, Alloc> other(n);
+  std::vector<T, Alloc>*from = &v, *to = &other;
   // Round r merges runs of 2^r pieces in pairs; each pair's output in 2^(r + 1) parts.
   for (std::size_t width = 1; width < tasks; width *= 2) {
     ctx.run_tasks(merge_phase, tasks, [&](std::size_t t) {

@@ -5,7 +5,9 @@
 // threads). Here each is tasks over ranges of edges, runs or positions, and the runs come out
 // as the serial code makes them, in the same order.
 #include <algorithm>
+#include <bit>
 
+#include "core/sort_in_parts.hpp"
 #include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
 #include "simplicity.hpp"
@@ -197,22 +199,13 @@ void SimplicityCheck::finish_runs_in_parts(const RunContext& ctx, std::size_t ta
   });
 }
 
-/// Sorted in slices, then merged pairwise: the order of monotone_chains' sort, a total one.
+/// The order of monotone_chains' sort (a strict total one, so any sort gives it): sorted in
+/// up to `tasks` pieces (rounded up to a power of two) and merged in rounds whose merges are cut at
+/// equal output positions, so that the last rounds run on every thread too (one merge of all the
+/// runs was Eurasia's longest task of the check at 16 threads).
 void SimplicityCheck::sort_runs_in_parts(const RunContext& ctx, std::size_t tasks) {
-  std::vector<std::uint32_t> cut(tasks + 1);
-  for (std::size_t t = 0; t <= tasks; ++t) cut[t] = range_start(chains_.size(), t, tasks);
-  ctx.run_tasks("check simplicity: sort runs", tasks, [&](std::size_t t) {
-    std::sort(chains_.begin() + cut[t], chains_.begin() + cut[t + 1], chain_before);
-  });
-  for (std::size_t width = 1; width < tasks; width *= 2) {
-    const std::size_t pairs = (tasks + 2 * width - 1) / (2 * width);
-    ctx.run_tasks("check simplicity: merge runs", pairs, [&](std::size_t i) {
-      const std::size_t lo = 2 * width * i, mid = std::min(lo + width, tasks),
-                        hi = std::min(lo + 2 * width, tasks);
-      std::inplace_merge(chains_.begin() + cut[lo], chains_.begin() + cut[mid],
-                         chains_.begin() + cut[hi], chain_before);
-    });
-  }
+  sort_in_parts(ctx, "check simplicity: sort runs", "check simplicity: merge runs", chains_,
+                chain_before, 1024, std::bit_ceil(tasks));
 }
 
 }  // namespace pear::detail

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/fill_vector.hpp"
 #include "core/sort_in_parts.hpp"
 #include "pear/config.hpp"
 #include "run_contexts.hpp"
@@ -82,6 +83,28 @@ TEST(SortInParts, SortsLikeOneSortAtEveryThreadAndPartitionCount) {
       const std::size_t rounds = tasks < 2 ? 0 : std::bit_width(tasks) - 1;
       EXPECT_EQ(phases_named(p, "merge"), PEAR_HAS_THREADS ? rounds : 0) << "n " << n;
       EXPECT_EQ(phases_named(p, "sort"), PEAR_HAS_THREADS ? 1u : 0u);
+    });
+  }
+}
+
+/// max_tasks overrides the partitions (the simplicity check's runs sort in more pieces than
+/// partitions), rounded down to a power of two, in a FillVector as well as a std::vector.
+TEST(SortInParts, MaxTasksSetsThePiecesWhateverThePartitions) {
+  const std::size_t n = 70'001;
+  FillVector<std::uint64_t> values(n);
+  std::mt19937_64 random(11);
+  for (auto& v : values) v = random();
+  FillVector<std::uint64_t> expected = values;
+  std::sort(expected.begin(), expected.end());
+  for (const std::size_t max_tasks :
+       {std::size_t{1}, std::size_t{3}, std::size_t{16}, std::size_t{64}, std::size_t{100}}) {
+    for_each_context({1, 2}, {1, 2}, [&](const RunContext& ctx, RunProfile& p) {
+      FillVector<std::uint64_t> sorted = values;
+      sort_in_parts(ctx, "sort", "merge", sorted, std::less<>{}, 1024, max_tasks);
+      ASSERT_EQ(sorted, expected) << max_tasks << " tasks";
+      const std::size_t tasks = std::min<std::size_t>(max_tasks, n / 1024);
+      const std::size_t rounds = tasks < 2 ? 0 : std::bit_width(tasks) - 1;
+      EXPECT_EQ(phases_named(p, "merge"), PEAR_HAS_THREADS ? rounds : 0) << max_tasks;
     });
   }
 }
