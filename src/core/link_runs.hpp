@@ -75,24 +75,59 @@ inline bool run_from(std::uint32_t head, const std::vector<std::uint32_t>& jumps
   return true;
 }
 
-/// The cycle through `entry` as runs of consecutive node numbers, in cycle order, from the
-/// links that jump (`jumps`, ascending). Empty when the links do not close into a cycle (the
+/// Where each jump of `jumps` (ascending) leads: the node it links to, and the index of the
+/// first jump at or after that node, where the run it starts ends.
+struct JumpLinks {
+  std::vector<std::uint32_t> target, next_jump;
+};
+
+/// JumpLinks for `jumps`, by `tasks` tasks of ctx (phase `phase`): each a binary search and a
+/// read of a link far away, so the walk over the runs only follows indices.
+inline void link_jumps(const Boundary& b, const std::vector<std::uint32_t>& jumps,
+                       const RunContext& ctx, const char* phase, std::size_t tasks,
+                       JumpLinks& links) {
+  const std::size_t count = jumps.size();
+  links.target.resize(count);
+  links.next_jump.resize(count);
+  ctx.run_tasks(phase, tasks, [&](std::size_t task) {
+    for (std::size_t k = count * task / tasks; k < count * (task + 1) / tasks; ++k) {
+      const std::uint32_t to = b.next[jumps[k]];
+      links.target[k] = to;
+      links.next_jump[k] = static_cast<std::uint32_t>(
+          std::lower_bound(jumps.begin(), jumps.end(), to) - jumps.begin());
+    }
+  });
+}
+
+/// The cycle through `entry` as runs of consecutive node numbers, in cycle order: a run from a
+/// node ends at the first jump at or after it (every node before that links to the next), or
+/// where the cycle comes back to `entry`. Empty when the links do not close into a cycle (the
 /// caller walks node by node then).
 inline std::vector<LinkRun> cycle_runs(const Boundary& b, std::uint32_t entry,
-                                       const std::vector<std::uint32_t>& jumps) {
-  const std::vector<std::uint32_t> heads = run_heads(b, jumps, entry);
+                                       const std::vector<std::uint32_t>& jumps,
+                                       const JumpLinks& links) {
   std::vector<LinkRun> runs;
-  std::size_t nodes = 0;
+  auto k =
+      static_cast<std::size_t>(std::lower_bound(jumps.begin(), jumps.end(), entry) - jumps.begin());
   std::uint32_t head = entry;
-  do {
-    LinkRun run;
-    if (!run_from(head, jumps, heads, run)) return {};
-    runs.push_back(run);
-    nodes += run.length;
-    if (nodes > b.size() || runs.size() > heads.size()) return {};
-    head = b.next[run.first + run.length - 1];
-  } while (head != entry);
-  return runs;
+  std::size_t nodes = 0;
+  while (k < jumps.size() && runs.size() <= jumps.size()) {
+    runs.push_back({head, jumps[k] - head + 1});
+    nodes += runs.back().length;
+    const std::uint32_t to = links.target[k];
+    const std::size_t after = links.next_jump[k];
+    if (to == entry) return nodes <= b.size() ? runs : std::vector<LinkRun>{};
+    // The run from `to` reaches entry: entry - 1 links to it, the cycle closes there.
+    if (to < entry && (after == jumps.size() || entry <= jumps[after])) {
+      runs.push_back({to, entry - to});
+      nodes += entry - to;
+      return nodes <= b.size() ? runs : std::vector<LinkRun>{};
+    }
+    if (nodes > b.size()) break;
+    head = to;
+    k = after;
+  }
+  return {};
 }
 
 /// A cycle's runs (cycle_runs) with where each starts in the cycle: the node at any position

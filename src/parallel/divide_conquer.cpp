@@ -213,9 +213,11 @@ bool walk_cycle_in_parts(const Boundary& b, std::uint32_t entry, const RunContex
   std::vector<std::uint32_t> jumps;
   if (!find_link_jumps(b, ctx, "cycle: jumps", parts, jumps, [](std::size_t, std::size_t) {}))
     return false;
+  JumpLinks links;
+  link_jumps(b, jumps, ctx, "cycle: jump links", parts, links);
   CycleLayout layout;
   ctx.run_serial("cycle: runs", [&] {
-    layout.assign(cycle_runs(b, entry, jumps));
+    layout.assign(cycle_runs(b, entry, jumps, links));
     if (!layout.runs.empty()) cycle.resize(layout.size);
   });
   if (layout.runs.empty()) return false;

@@ -28,9 +28,11 @@ void SharedBoundary::walk_cycle(std::uint32_t entry, const RunContext& ctx) {
         std::fill(owner.begin() + first, owner.begin() + last, landmark);
         std::fill(stamp.begin() + first, stamp.begin() + last, 0);
       });
+  JumpLinks links;
+  if (few) link_jumps(*b, jumps, ctx, "classify: jump links", parts, links);
   CycleLayout layout;
   ctx.run_serial("classify: walk", [&] {
-    if (few) layout.assign(cycle_runs(*b, entry, jumps));
+    if (few) layout.assign(cycle_runs(*b, entry, jumps, links));
     if (layout.runs.empty()) return walk_node_by_node(entry);  // many jumps
     order.resize(layout.size);
   });

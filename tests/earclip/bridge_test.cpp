@@ -307,6 +307,49 @@ TEST(Cycles, TheSameEntriesInPartsAsNodeByNode) {
   }
 }
 
+/// cycle_runs (core/link_runs.hpp) against a walk node by node: rings joined by bridges (their
+/// copies numbered past the rings), nodes unlinked (their stale links point on), entries at a
+/// run's start, inside a run (the cycle then closes with a run that stops short of it) and at
+/// a copy; a cycle that does not close gives no runs.
+TEST(Cycles, RunsFromTheJumpsLayOutTheWalk) {
+  Boundary b = rings({30'000, 5'000, 700, 9}, 0);
+  b.add_diagonal(12'000, 30'000 + 2'500);         // joins the second ring
+  b.add_diagonal(29'000, 35'000 + 350);           // the third
+  b.add_diagonal(35'000 + 700 + 4, 30'000 + 10);  // the fourth, from the third
+  for (std::uint32_t v : {100u, 101u, 20'000u, 35'000u + 699u}) b.unlink(v);
+  const auto walked = [&](std::uint32_t entry) {
+    std::vector<std::uint32_t> order;
+    std::uint32_t v = entry;
+    do order.push_back(v), v = b.next[v];
+    while (v != entry && order.size() <= b.size());
+    return order;
+  };
+  for_each_context({1u, 2u}, {1u, 4u}, [&](const RunContext& ctx, const RunProfile&) {
+    std::vector<std::uint32_t> jumps;
+    ASSERT_TRUE(find_link_jumps(b, ctx, "jumps", 4, jumps, [](std::size_t, std::size_t) {}));
+    JumpLinks links;
+    link_jumps(b, jumps, ctx, "jump links", 3, links);
+    for (std::uint32_t entry : {0u, 5'000u, 12'001u, 30'000u + 2'600u, b.size() - 1}) {
+      const std::vector<std::uint32_t> expected = walked(entry);
+      ASSERT_EQ(expected.size(), 30'000u + 5'000u + 700u + 9u - 4u + 6u) << "one cycle";
+      CycleLayout layout;
+      layout.assign(cycle_runs(b, entry, jumps, links));
+      ASSERT_EQ(layout.size, expected.size()) << "entry " << entry;
+      std::vector<std::uint32_t> order(layout.size);
+      layout.for_positions(0, order.size(), [&](std::size_t i, std::uint32_t v) { order[i] = v; });
+      EXPECT_EQ(order, expected) << "entry " << entry;
+    }
+  });
+  // A link cut: the cycle through node 0 no longer closes.
+  b.next[29'500] = 29'500;
+  std::vector<std::uint32_t> jumps;
+  const RunContext serial;
+  ASSERT_TRUE(find_link_jumps(b, serial, "jumps", 1, jumps, [](std::size_t, std::size_t) {}));
+  JumpLinks links;
+  link_jumps(b, jumps, serial, "jump links", 1, links);
+  EXPECT_TRUE(cycle_runs(b, 0, jumps, links).empty());
+}
+
 TEST(Cycles, ScrambledLinksAreWalkedNodeByNode) {
   Boundary b = rings({70'000}, 0);
   std::vector<std::uint32_t> order(b.size());
