@@ -29,7 +29,9 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
 /// triangles, flip them (in parallel), and make their outer edges and the suspects left over the
 /// next round's. Small rounds run on this thread. The picks depend on the mesh only, never on
 /// timing or on whether a round ran in parallel. Returns the flip count (at most `budget`).
-std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects, const RunContext& ctx,
+/// `queued`: a flag per half-edge, all clear (the sets' flips leave theirs so), and so left.
+std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
+                         std::vector<std::uint8_t>& queued, const RunContext& ctx,
                          std::size_t budget);
 
 }  // namespace pear::detail

@@ -83,7 +83,7 @@ void flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
   for (std::size_t f : flips) stats.flips_in_partitions += f;
   // Records its own phases ("cdt relink borders: ...").
   std::vector<std::uint32_t> suspects = relink_borders(mesh, borders, ctx);
-  stats.flips_on_borders = flip_borders(mesh, std::move(suspects), ctx, budget);
+  stats.flips_on_borders = flip_borders(mesh, std::move(suspects), queued, ctx, budget);
   stats.flips = stats.flips_in_partitions + stats.flips_on_borders;
 }
 
