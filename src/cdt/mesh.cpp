@@ -249,7 +249,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     mesh.points = points;
     mesh.triangles = &triangles;
     mesh.interior_edges = 0;
-    mesh.twin.assign(3 * triangles.size(), no_twin);
+    mesh.twin.resize(3 * triangles.size());  // no_twin written by the tasks below
     keys.half_edges = 3 * triangles.size();
     keys.low = unfilled<std::uint32_t>(edges);
     keys.high = unfilled<std::uint32_t>(edges);
@@ -257,6 +257,10 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     buckets.bad_end.assign(buckets.parts, 0);
   });
   ctx.run_tasks("cdt adjacency: edges", buckets.parts, [&](std::size_t c) {
+    const std::size_t halves = mesh.twin.size();
+    std::fill(mesh.twin.begin() + static_cast<std::ptrdiff_t>(halves * c / buckets.parts),
+              mesh.twin.begin() + static_cast<std::ptrdiff_t>(halves * (c + 1) / buckets.parts),
+              no_twin);
     collect_chunk(polygon, triangles, points.size(), keys, buckets, c);
   });
   if (std::find(buckets.bad_end.begin(), buckets.bad_end.end(), 1) != buckets.bad_end.end())

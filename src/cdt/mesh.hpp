@@ -5,6 +5,7 @@
 #include <span>
 #include <vector>
 
+#include "core/fill_vector.hpp"
 #include "core/stage.hpp"
 #include "geometry/segments.hpp"
 
@@ -18,8 +19,10 @@ inline constexpr std::uint32_t no_twin = UINT32_MAX;
 struct Mesh {
   std::span<const Point> points;
   TriangleList* triangles = nullptr;
-  std::vector<std::uint32_t> twin;  ///< the same edge seen from the neighbour, or no_twin
-  std::size_t interior_edges = 0;   ///< edges with a twin: the ones that may be flipped
+  /// The same edge seen from the neighbour, or no_twin. Resized unwritten, then filled by the
+  /// adjacency build's tasks (filled on one thread it was Eurasia's 4 ms serial allocation).
+  FillVector<std::uint32_t> twin;
+  std::size_t interior_edges = 0;  ///< edges with a twin: the ones that may be flipped
 
   std::uint32_t corner(std::uint32_t h, std::uint32_t step) const {
     return (*triangles)[h / 3][(h % 3 + step) % 3];
