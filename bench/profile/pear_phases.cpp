@@ -37,48 +37,39 @@ struct Config {
 std::vector<Config> configs() {
   using pear::Algorithm;
   std::vector<Config> all;
+  // partitions 0: as many as threads.
   const auto add = [&](const char* name, Algorithm algorithm, unsigned threads, bool cdt,
+                       unsigned partitions = 0,
                        pear::EarHeuristic heuristic = pear::EarHeuristic::top) {
     pear::Options o;
     o.algorithm = algorithm;
     o.threads = threads;
+    o.partitions = partitions;
     o.delaunay = cdt;
     o.heuristic = heuristic;
     all.push_back({name, o});
   };
   add("top", Algorithm::sequential, 1, false);
-  add("fast", Algorithm::sequential, 1, false, pear::EarHeuristic::fast);
+  add("fast", Algorithm::sequential, 1, false, 0, pear::EarHeuristic::fast);
   add("cdt", Algorithm::sequential, 1, true);
-  add("cdtfast", Algorithm::sequential, 1, true, pear::EarHeuristic::fast);
+  add("cdtfast", Algorithm::sequential, 1, true, 0, pear::EarHeuristic::fast);
   add("pc2", Algorithm::partition_and_cut, 2, false);
   add("pc2cdt", Algorithm::partition_and_cut, 2, true);
-  add("pc2t1", Algorithm::partition_and_cut, 1, false);  // the same work on one thread
-  all.back().options.partitions = 2;
+  add("pc2t1", Algorithm::partition_and_cut, 1, false, 2);  // the same work on one thread
   // 16 partitions on one thread: the work/span bound for 16 cores from task times.
-  add("pc16t1", Algorithm::partition_and_cut, 1, false);
-  all.back().options.partitions = 16;
-  add("cdt16t1", Algorithm::sequential, 1, true);  // the CDT's own phases at 16 partitions
-  all.back().options.partitions = 16;
+  add("pc16t1", Algorithm::partition_and_cut, 1, false, 16);
+  add("cdt16t1", Algorithm::sequential, 1, true, 16);  // the CDT's own phases at 16 partitions
   // 16 partitions on more threads: a task's time against pc16t1's shows what running beside
   // other tasks costs on this machine (shared caches, memory bandwidth, SMT siblings).
-  add("pc16t4", Algorithm::partition_and_cut, 4, false);
-  all.back().options.partitions = 16;
-  add("pc16t8", Algorithm::partition_and_cut, 8, false);
-  all.back().options.partitions = 16;
-  add("pc16t16", Algorithm::partition_and_cut, 16, false);
-  all.back().options.partitions = 16;
-  add("cdt16t16", Algorithm::sequential, 16, true);
-  all.back().options.partitions = 16;
-  add("mc16t1", Algorithm::mark_and_cut, 1, false);
-  all.back().options.partitions = 16;
-  add("dc16t1", Algorithm::divide_and_conquer, 1, false);
-  all.back().options.partitions = 16;
-  add("auto4t1", Algorithm::automatic, 1, false);  // what automatic picks at 4 partitions
-  all.back().options.partitions = 4;
-  add("auto16t1", Algorithm::automatic, 1, false);  // what automatic picks at 16 partitions
-  all.back().options.partitions = 16;
-  add("auto16t1cdt", Algorithm::automatic, 1, true);
-  all.back().options.partitions = 16;
+  add("pc16t4", Algorithm::partition_and_cut, 4, false, 16);
+  add("pc16t8", Algorithm::partition_and_cut, 8, false, 16);
+  add("pc16t16", Algorithm::partition_and_cut, 16, false, 16);
+  add("cdt16t16", Algorithm::sequential, 16, true, 16);
+  add("mc16t1", Algorithm::mark_and_cut, 1, false, 16);
+  add("dc16t1", Algorithm::divide_and_conquer, 1, false, 16);
+  add("auto4t1", Algorithm::automatic, 1, false, 4);    // what automatic picks at 4 partitions
+  add("auto16t1", Algorithm::automatic, 1, false, 16);  // what automatic picks at 16 partitions
+  add("auto16t1cdt", Algorithm::automatic, 1, true, 16);
   add("mc2", Algorithm::mark_and_cut, 2, false);
   add("dc2", Algorithm::divide_and_conquer, 2, false);
   add("auto2", Algorithm::automatic, 2, false);
