@@ -11,6 +11,8 @@
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
 #include "pear/predicates.hpp"
+#include "predicates/expansion.hpp"
+#include "predicates/long_accumulator.hpp"
 
 namespace pear::detail {
 namespace {
@@ -56,20 +58,22 @@ std::size_t lowest_leftmost(const Point* p, std::size_t n) {
 
 /// +1 counterclockwise, -1 clockwise, 0 when every point is collinear (zero area).
 /// Decided exactly at the lowest-leftmost vertex, which is convex for a simple ring;
-/// for non-simple rings whose extreme corner is flat, the shoelace sign decides.
+/// for non-simple rings whose extreme corner is flat, the exact sign of the shoelace sum
+/// (each term's two products exactly, summed without rounding: the same answer on every
+/// platform, where a long double was 80 bits on x86 and soft floats of 128 in WebAssembly).
 int ring_orientation(const Point* p, std::size_t n, std::size_t lowest) {
   const double turn = orient2d(p[(lowest + n - 1) % n], p[lowest], p[(lowest + 1) % n]);
   if (turn != 0) return turn > 0 ? 1 : -1;
-  long double area = 0;
+  LongAccumulator area;
   bool collinear = true;
   for (std::size_t i = 0; i < n; ++i) {
     const Point& a = p[i];
     const Point& b = p[(i + 1) % n];
-    area += static_cast<long double>(a.x) * b.y - static_cast<long double>(b.x) * a.y;
+    area.add(exact_cross(a.x, b.y, b.x, a.y).view());
     if (collinear && orient2d(p[0], p[lowest == 0 ? 1 : lowest], a) != 0) collinear = false;
   }
   if (collinear) return 0;
-  return area >= 0 ? 1 : -1;
+  return area.sign() >= 0 ? 1 : -1;
 }
 
 /// Whether a ring going a -> b -> c (a != b != c) turns straight back at b: collinear, b not

@@ -45,13 +45,15 @@ class ExactSum {
     return 0;
   }
 
-  /// The sum rounded to a double (within a few units in the last place).
+  /// The sum rounded to a double (within a few units in the last place): the limbs from the top
+  /// down, each exact as a double, so only the additions round. In doubles, not long doubles:
+  /// WebAssembly's are 128-bit soft floats (4 KB of code in pear.wasm).
   double to_double() {
     normalize();
-    long double value = 0;
+    double value = 0;
     for (int i = limb_count - 1; i >= 0; --i)
-      value += std::ldexp(static_cast<long double>(limbs_[i]), limb_bits * i + base_exponent);
-    return static_cast<double>(value);
+      value += std::ldexp(static_cast<double>(limbs_[i]), limb_bits * i + base_exponent);
+    return value;
   }
 
   bool out_of_range() const { return out_of_range_; }
