@@ -67,7 +67,11 @@ void BitsetClipper::load(std::uint32_t entry, const std::vector<std::uint8_t>* s
   candidates_ = convex_;
   slabbed_ = words_ > 1;
   if (!slabbed_) {
-    for (std::uint32_t i = 0; i < n; ++i) xs_column_[i] = b.pos[i].x, ys_column_[i] = b.pos[i].y;
+    std::fill_n(blocker_bit_.begin(), n, 0);
+    blockers_ = 0;
+    live_blockers_ = 0;
+    for (std::uint64_t set = reflex_.words[0] | shared_.words[0]; set != 0; set &= set - 1)
+      add_blocker(static_cast<std::uint32_t>(std::countr_zero(set)));
   } else {
     xs_.build(b.pos, &Point::x, words_);
     ys_.build(b.pos, &Point::y, words_);
@@ -184,9 +188,11 @@ struct BitsetClipper::OneWord {
   Boundary& b;
   const Point* pos = b.pos.data();
   std::uint32_t *prev = b.prev.data(), *next = b.next.data();
-  const std::uint32_t count = b.size();
   std::uint64_t reflex = self.reflex_.words[0], convex = self.convex_.words[0];
   std::uint64_t candidates = self.candidates_.words[0], shared = self.shared_.words[0];
+  std::uint64_t live = self.live_blockers_;
+  bool strayed = false;  ///< a node turned reflex that is no blocker (only past a crossing)
+  const std::uint64_t* blocker_bit = self.blocker_bit_.data();
   std::uint32_t remaining = self.remaining_, anchor = self.anchor_;
   TriangleList& out;
   const std::size_t first = out.size();
@@ -207,13 +213,12 @@ struct BitsetClipper::OneWord {
     if (!diagonal_clear_at_ends(a, c, pos[prev[p]], pos[next[n]], turns)) return false;
     const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
                   std::max({a.y, t.y, c.y})};
-    const std::uint64_t ear =
-        (std::uint64_t{1} << p) | (std::uint64_t{1} << v) | (std::uint64_t{1} << n);
+    const std::uint64_t ear = blocker_bit[p] | blocker_bit[v] | blocker_bit[n];
     std::uint64_t near =
-        self.points_in_box_(self.xs_column_.data(), self.ys_column_.data(), count, box) &
-        (reflex | shared) & ~ear;
+        self.points_in_box_(self.xs_column_.data(), self.ys_column_.data(), self.blockers_, box) &
+        live & ~ear;
     for (; near != 0; near &= near - 1) {
-      const auto q = static_cast<std::uint32_t>(std::countr_zero(near));
+      const std::uint32_t q = self.blocker_node_[std::countr_zero(near)];
       if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, pos[q])) return false;
     }
     return true;
@@ -223,6 +228,12 @@ struct BitsetClipper::OneWord {
     const std::uint64_t bit = std::uint64_t{1} << v;
     const std::uint64_t now_convex = bit_if(v, turn > 0);
     reflex = (reflex & ~bit) | bit_if(v, turn < 0);
+    // A blocker blocks while reflex or shared. A reflex node that is no blocker (a crossing let
+    // a clip turn it) stops the loop, which adds it (add_strays) and goes on.
+    const std::uint64_t mine = blocker_bit[v];
+    const bool blocking = (turn < 0) | ((shared >> v) & 1);
+    live = (live & ~mine) | (mine & (std::uint64_t{0} - blocking));
+    strayed |= (turn < 0) & (mine == 0);
     convex = (convex & ~bit) | now_convex;
     candidates = (candidates & ~bit) | now_convex;
     if constexpr (keyed)
@@ -238,6 +249,7 @@ struct BitsetClipper::OneWord {
     const std::uint64_t bit = std::uint64_t{1} << v;
     convex &= ~bit;
     shared &= ~bit;  // off the cycle: it blocks nothing now
+    live &= ~blocker_bit[v];
     candidates &= ~bit;
     anchor = n;
     --remaining;
@@ -261,6 +273,7 @@ struct BitsetClipper::OneWord {
     out.resize(static_cast<std::size_t>(triangle - out.data()));
     self.reflex_.words[0] = reflex, self.convex_.words[0] = convex;
     self.candidates_.words[0] = candidates, self.shared_.words[0] = shared;
+    self.live_blockers_ = live;
     self.remaining_ = remaining, self.anchor_ = anchor;
   }
   /// store(), and the cycle's last triangle.
@@ -270,50 +283,81 @@ struct BitsetClipper::OneWord {
   }
 };
 
-/// clip_by_key on one word.
+/// clip_by_key on one word. The loop holds no store but to the cycle and the triangles (one to
+/// the clipper's own arrays slowed the loop in node by a twentieth): a stray reflex node ends
+/// it, and it starts again once the node is a blocker.
 bool BitsetClipper::clip_one_word_by_key(TriangleList& out) {
-  OneWord<true> w(*this, out);
   bool rescanned = false;
-  while (w.remaining > 3) {
-    if (w.candidates == 0) {
-      if (rescanned) break;
-      rescanned = true;
-      w.candidates = w.convex;
-      continue;
+  for (;;) {
+    OneWord<true> w(*this, out);
+    while (w.remaining > 3 && !w.strayed) {
+      if (w.candidates == 0) {
+        if (rescanned) break;
+        rescanned = true;
+        w.candidates = w.convex;
+        continue;
+      }
+      const std::uint32_t best = w.best_candidate();
+      if (!w.is_ear(best)) {
+        w.candidates &= ~(std::uint64_t{1} << best);
+        continue;
+      }
+      rescanned = false;
+      w.clip(best);
     }
-    const std::uint32_t best = w.best_candidate();
-    if (!w.is_ear(best)) {
-      w.candidates &= ~(std::uint64_t{1} << best);
-      continue;
-    }
-    rescanned = false;
-    w.clip(best);
+    if (!w.strayed) return w.finish();
+    w.store();
+    add_strays();
   }
-  return w.finish();
 }
 
-/// clip_by_walk on one word.
+/// clip_by_walk on one word, started again as clip_one_word_by_key is.
 bool BitsetClipper::clip_one_word_by_walk(TriangleList& out) {
-  OneWord<false> w(*this, out);
-  std::uint32_t v = w.anchor, since_clip = 0;
-  const std::uint64_t budget = std::uint64_t{walk_budget} * w.remaining;
-  for (std::uint64_t steps = 0; w.remaining > 3; ++steps) {
-    if (steps == budget) {
-      w.store();
-      anchor_ = v;
-      return clip_by_key_after_walk(out);
+  std::uint32_t v = anchor_, since_clip = 0;
+  const std::uint64_t budget = std::uint64_t{walk_budget} * remaining_;
+  std::uint64_t steps = 0;
+  for (;;) {
+    OneWord<false> w(*this, out);
+    bool stuck = false;
+    for (; w.remaining > 3 && !w.strayed; ++steps) {
+      if (steps == budget) {
+        w.store();
+        anchor_ = v;
+        return clip_by_key_after_walk(out);
+      }
+      if (((w.convex >> v) & 1) && w.is_ear(v)) {
+        const std::uint32_t n = w.next[v];
+        w.clip(v);
+        v = n;
+        since_clip = 0;
+      } else {
+        if (++since_clip > w.remaining) {
+          stuck = true;
+          break;
+        }
+        v = w.next[v];
+      }
     }
-    if (((w.convex >> v) & 1) && w.is_ear(v)) {
-      const std::uint32_t n = w.next[v];
-      w.clip(v);
-      v = n;
-      since_clip = 0;
-    } else {
-      if (++since_clip > w.remaining) break;
-      v = w.next[v];
-    }
+    if (!w.strayed || stuck) return w.finish();
+    w.store();
+    add_strays();
   }
-  return w.finish();
+}
+
+/// The reflex nodes that are not blockers join them (one word).
+void BitsetClipper::add_strays() {
+  for (std::uint64_t set = reflex_.words[0]; set != 0; set &= set - 1) {
+    const auto q = static_cast<std::uint32_t>(std::countr_zero(set));
+    if (blocker_bit_[q] == 0) add_blocker(q);
+  }
+}
+
+/// Node q (one word, not yet a blocker) at the blockers' end, blocking.
+void BitsetClipper::add_blocker(std::uint32_t q) {
+  xs_column_[blockers_] = b_->pos[q].x, ys_column_[blockers_] = b_->pos[q].y;
+  blocker_node_[blockers_] = q;
+  blocker_bit_[q] = std::uint64_t{1} << blockers_;
+  live_blockers_ |= std::uint64_t{1} << blockers_++;
 }
 
 /// `top`: the candidate with the smallest key that is an ear. A node found blocked waits until

@@ -149,6 +149,43 @@ TEST(BitsetClipper, RingsThatAreNotSimpleEndAndLeaveTheRestLinked) {
   EXPECT_GT(refused, 0);
 }
 
+/// The one-word loops (at most 64 nodes) clip the same ears in the same order as the general
+/// loops, which a boundary of more than 64 nodes takes (the ring, then nodes on no cycle), on
+/// rings that are not simple too: there a clip past a crossing can turn a neighbour reflex that
+/// the one-word ear test's list of blockers did not hold.
+TEST(BitsetClipper, OneWordLoopsClipAsTheGeneralOnesPastCrossings) {
+  std::mt19937 rng(11);
+  std::uniform_int_distribution<int> coordinate(0, 6), count(4, 40);
+  int differed_from_simple = 0;
+  for (int round = 0; round < 3000; ++round) {
+    Ring ring;
+    const int k = count(rng);
+    for (int i = 0; i < k; ++i) ring.push_back({double(coordinate(rng)), double(coordinate(rng))});
+    FlatPolygon flat;
+    flatten(Polygon{ring}, flat);
+    CleanPolygon clean;
+    std::vector<Diagnostic> diagnostics;
+    if (clean_polygon(PolygonView{flat.points, flat.ring_starts}, clean, diagnostics) != Status::ok)
+      continue;
+    for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
+      Boundary one_word = bridged(clean), general = one_word;
+      for (std::uint32_t extra = general.size(); extra < 65; ++extra) {
+        general.pos.push_back({100.0 + extra, 100.0});
+        general.vertex.push_back(extra);
+        general.prev.push_back(extra);
+        general.next.push_back(extra);
+      }
+      BitsetClipper first, second;
+      TriangleList by_word, by_words;
+      const bool done = first.clip(one_word, 0, h, by_word, nullptr);
+      EXPECT_EQ(second.clip(general, 0, h, by_words, nullptr), done);
+      EXPECT_EQ(by_word, by_words) << "round " << round;
+      differed_from_simple += !done || by_word.size() != clean.points.size() - 2;
+    }
+  }
+  EXPECT_GT(differed_from_simple, 0);
+}
+
 /// `fast`'s walk on rings whose ears lie only near their ends (a spiral's walls, a Hilbert
 /// curve's) hands over to `top`'s order: its ear tests stay linear in the nodes, where a lap of
 /// the walk for every few clips made them quadratic (a 760-node spiral took 41 tests a node).
