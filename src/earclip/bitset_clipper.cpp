@@ -9,11 +9,6 @@
 namespace pear::detail {
 namespace {
 
-/// Node v's bit in word w of a NodeSet, 0 when v lies in another word.
-std::uint64_t bit_in_word(std::uint32_t v, std::uint32_t w) {
-  return v / 64 == w ? std::uint64_t{1} << (v % 64) : 0;
-}
-
 /// The bit of node v in its word when `on`, else 0, without a branch: whether a corner is
 /// convex is as good as random to the branch predictor.
 std::uint64_t bit_if(std::uint32_t v, bool on) {
@@ -81,10 +76,9 @@ void BitsetClipper::load(std::uint32_t entry, const std::vector<std::uint8_t>* s
 
 /// v's angle is new (it shrank when a neighbour was clipped): convex, reflex or collinear, and
 /// if convex a candidate again with its new key.
-inline void BitsetClipper::refresh(std::uint32_t v) {
+inline void BitsetClipper::refresh(std::uint32_t v, double turn) {
   const Boundary& b = *b_;
-  const Point &a = b.pos[b.prev[v]], &t = b.pos[v], &c = b.pos[b.next[v]];
-  const double turn = orient2d(a, t, c);
+  const Point &a = b.pos[b.prev[v]], &c = b.pos[b.next[v]];
   const std::uint64_t bit = std::uint64_t{1} << (v % 64);
   const std::uint64_t convex = bit_if(v, turn > 0), reflex = bit_if(v, turn < 0);
   const std::uint32_t w = v / 64;
@@ -103,29 +97,26 @@ bool BitsetClipper::is_ear(std::uint32_t v) {
   const Point* pos = b.pos.data();
   const std::uint32_t p = b.prev[v], n = b.next[v];
   const Point a = pos[p], t = pos[v], c = pos[n];
-  if (!diagonal_clear_at_ends(a, c, pos[b.prev[p]], pos[b.next[n]])) return false;
+  if (!diagonal_clear_at_ends(a, c, pos[b.prev[p]], pos[b.next[n]], turns_)) return false;
   const double x0 = std::min({a.x, t.x, c.x}), x1 = std::max({a.x, t.x, c.x});
   const double y0 = std::min({a.y, t.y, c.y}), y1 = std::max({a.y, t.y, c.y});
-  // The ear's own corners cannot block it. Each node left is tested for the box first: most
-  // lie outside.
-  const auto blocked = [&](std::uint64_t near, std::uint32_t w) {
-    near &= (reflex_.words[w] | shared_.words[w]) &
-            ~(bit_in_word(p, w) | bit_in_word(v, w) | bit_in_word(n, w));
-    for (std::uint64_t set = near; set != 0; set &= set - 1) {
+  // The nodes in the slabs the box meets that may block, every word at once (a loop without
+  // branches), less the ear's own corners; each is tested for the box first: most lie outside.
+  const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
+  const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
+  std::array<std::uint64_t, max_words> near;
+  for (std::uint32_t w = 0; w < words_; ++w)
+    near[w] = xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
+              ys_.from[sy0].words[w] & (reflex_.words[w] | shared_.words[w]);
+  for (const std::uint32_t corner : {p, v, n})
+    near[corner / 64] &= ~(std::uint64_t{1} << (corner % 64));
+  for (std::uint32_t w = 0; w < words_; ++w) {
+    for (std::uint64_t set = near[w]; set != 0; set &= set - 1) {
       const std::uint32_t q = w * 64 + static_cast<std::uint32_t>(std::countr_zero(set));
       const Point& x = pos[q];
       if (!((x.x >= x0) & (x.x <= x1) & (x.y >= y0) & (x.y <= y1))) continue;
-      if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, x)) return true;
+      if (blocks(b, AllLinks{}, p, v, n, q, a, t, c, x)) return false;
     }
-    return false;
-  };
-  const std::uint32_t sx0 = xs_.slab(x0), sx1 = xs_.slab(x1);
-  const std::uint32_t sy0 = ys_.slab(y0), sy1 = ys_.slab(y1);
-  for (std::uint32_t w = 0; w < words_; ++w) {
-    if (blocked(xs_.upto[sx1].words[w] & xs_.from[sx0].words[w] & ys_.upto[sy1].words[w] &
-                    ys_.from[sy0].words[w],
-                w))
-      return false;
   }
   return true;
 }
@@ -141,8 +132,8 @@ void BitsetClipper::clip_ear(std::uint32_t v, TriangleList& out) {
   drop_candidate(v);
   anchor_ = n;
   --remaining_;
-  refresh(p);
-  refresh(n);
+  refresh(p, turns_.before);
+  refresh(n, turns_.after);
 }
 
 void BitsetClipper::drop_candidate(std::uint32_t v) {

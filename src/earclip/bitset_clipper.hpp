@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/ear_test.hpp"
 #include "core/stage.hpp"
 #include "geometry/box_scan.hpp"
 
@@ -44,8 +45,10 @@ class BitsetClipper {
   bool is_ear(std::uint32_t v);
   void add_blocker(std::uint32_t q);
   void add_strays();
+  /// Clips v, just found an ear by is_ear (whose turns_ its neighbours take).
   void clip_ear(std::uint32_t v, TriangleList& out);
-  void refresh(std::uint32_t v);
+  /// v's corner turns by `turn` now (orient2d of it and its neighbours).
+  void refresh(std::uint32_t v, double turn);
   bool clip_by_key(TriangleList& out);
   template <bool keyed>
   struct OneWord;
@@ -112,6 +115,8 @@ class BitsetClipper {
   std::uint32_t remaining_ = 0;
   std::uint32_t anchor_ = 0;  ///< a node of the cycle
   std::size_t ear_tests_ = 0;
+  /// The turns the last ear tested by is_ear gives its neighbours once clipped.
+  DiagonalTurns turns_;
 };
 
 }  // namespace pear::detail
