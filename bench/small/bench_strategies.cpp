@@ -1,7 +1,7 @@
 // bench_strategies: the crossover of the ear clipper's two strategies, which decides
 // BitsetClipper::max_nodes. One ring of n vertices of a synthetic family (random, star, koch),
 // cleaned and made a boundary once, clipped many times over by the bit sets and by the queue
-// (EarClipper::run_queue), n from 16 to 4096 (the bit sets up to their limit of 768). Each
+// (EarClipper::run_queue), n from 16 to 4096 (the bit sets up to their limit of 1,024). Each
 // iteration copies the boundary first (clipping works in place): the same cost for both.
 //
 //   bench_strategies [--benchmark_filter=...]

@@ -1,4 +1,4 @@
-// Ear clipping with bit sets: the strategy EarClipper takes on boundaries of at most 768 nodes
+// Ear clipping with bit sets: the strategy EarClipper takes on boundaries of at most 1,024 nodes
 // (docs/engine.md, "Strategies"). The same ear test as the queue's (ear_test.hpp), but the
 // strictly reflex, convex and candidate nodes are bit sets over the node numbers, the next ear
 // is the candidate with the smallest top_key (a scan of the set) or, for `fast`, the next one
@@ -7,7 +7,8 @@
 // sets in registers) those a SIMD scan of their positions finds in its box (box_scan's
 // points_in_box), past 64 those of the slabs the box meets. No grid, bucket queue or pinch
 // table to set up; each step still scans, so the cost per vertex grows with n
-// (bench_strategies: at 768 nodes 0.8-0.9x the queue's time, at 16 a third; docs/engine.md).
+// (bench_strategies: at 1,024 nodes 0.8-0.9x the queue's time, at 16 a third, at 2,048 up to
+// 1.5x; docs/engine.md).
 #pragma once
 
 #include <array>
@@ -24,7 +25,7 @@ namespace pear::detail {
 
 class BitsetClipper {
  public:
-  static constexpr std::size_t max_nodes = 768;
+  static constexpr std::size_t max_nodes = 1024;  // stale_words_ holds 32 words at most
   static constexpr std::size_t max_words = max_nodes / 64;
 
   /// Clips the cycle of `b` through `entry` in place (b.size() <= max_nodes), appending its

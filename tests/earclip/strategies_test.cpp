@@ -1,5 +1,5 @@
 // The ear clipper's strategies: the bit sets (src/earclip/bitset_clipper.cpp, which EarClipper
-// takes for boundaries of at most 768 nodes) and the queue. The bit sets on simple rings of
+// takes for boundaries of at most 1,024 nodes) and the queue. The bit sets on simple rings of
 // every synthetic family, with collinear runs added, and on rectilinear staircases, must give
 // n - 2 triangles that the validator accepts, for `top` and `fast`; on rings that are not simple
 // they must end and either clip everything or leave the rest linked for the queue. Both
@@ -85,7 +85,8 @@ void expect_valid_clip(const Polygon& polygon, EarHeuristic heuristic) {
 TEST(BitsetClipper, SyntheticFamiliesAreClippedValidly) {
   int polygons = 0;
   for (std::string_view kind : {"star", "comb", "koch", "hilbert", "random"}) {
-    for (std::size_t n : {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u, 500u, 768u}) {
+    for (std::size_t n :
+         {8u, 12u, 20u, 33u, 64u, 100u, 128u, 200u, 300u, 384u, 500u, 768u, 1000u}) {
       for (std::uint64_t seed = 1; seed <= 5; ++seed) {
         Polygon polygon;
         try {
@@ -235,7 +236,7 @@ void expect_strategies_agree(const Polygon& polygon) {
 TEST(Strategies, AgreeOnOneRing) {
   int compared = 0;
   for (std::string_view kind : {"star", "random", "koch", "comb"}) {
-    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u, 600u, 768u}) {
+    for (std::size_t n : {10u, 24u, 64u, 100u, 128u, 250u, 384u, 600u, 768u, 1000u}) {
       Polygon polygon;
       try {
         polygon = generate_polygon(kind, n, 3);
