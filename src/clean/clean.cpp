@@ -131,18 +131,24 @@ struct CornerScan {
   // selects of doubles branches (and kept `low` in memory), a misprediction at every new low.
   std::uint64_t low_x = std::bit_cast<std::uint64_t>(p[from].x);
   std::uint64_t low_y = std::bit_cast<std::uint64_t>(p[from].y);
-  for (std::size_t k = from, before = (from == 0 ? n : from) - 1; k < to; before = k++) {
-    const Point &a = p[before], &b = p[k], &c = p[k + 1 == n ? 0 : k + 1];
+  // The corner's edges as vectors u = b - a and w = c - b, w becoming the next corner's u: the
+  // orientation is u x w, whose filter bound is orient2d's (any four rounded differences).
+  const Point& first_before = p[(from == 0 ? n : from) - 1];
+  double ux = p[from].x - first_before.x, uy = p[from].y - first_before.y;
+  for (std::size_t k = from; k < to; ++k) {
+    const Point &b = p[k], &c = p[k + 1 == n ? 0 : k + 1];
     const double lx = std::bit_cast<double>(low_x), ly = std::bit_cast<double>(low_y);
     const bool lower = (b.y < ly) | ((b.y == ly) & (b.x < lx));
     const std::uint64_t keep = std::uint64_t{0} - lower;
     low_x = (std::bit_cast<std::uint64_t>(b.x) & keep) | (low_x & ~keep);
     low_y = (std::bit_cast<std::uint64_t>(b.y) & keep) | (low_y & ~keep);
     scan.lowest = (k & keep) | (scan.lowest & ~keep);
-    const double left = (a.x - c.x) * (b.y - c.y), right = (a.y - c.y) * (b.x - c.x);
+    const double wx = c.x - b.x, wy = c.y - b.y;
+    const double left = ux * wy, right = uy * wx;
     const bool turns =
         std::fabs(left - right) > 2 * orient2d_filter_bound * (std::fabs(left) + std::fabs(right));
-    scan.maybe |= !((b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) > 0) & !turns;
+    scan.maybe |= !(ux * wx + uy * wy > 0) & !turns;
+    ux = wx, uy = wy;
   }
   return scan;
 }
