@@ -75,9 +75,11 @@ class BitsetClipper {
   /// The nodes in each of `count` slabs along one axis, accumulated from either end: those
   /// whose coordinate lies in [lo, hi] are among upto[slab(hi)] & from[slab(lo)]. slab() is
   /// monotone, so no node in the range is left out. Past 64 nodes the ear test then looks at
-  /// the reflex nodes near its triangle instead of all of them.
+  /// the reflex nodes near its triangle instead of all of them. 64 slabs, not 16: a glyph's
+  /// slab held several reflex nodes that the ear's box then ruled out one branch each
+  /// (bench_small glyphs 1.04x, node 1.02-1.04x; 32 KB of sets a clipper).
   struct Slabs {
-    static constexpr std::uint32_t count = 16;
+    static constexpr std::uint32_t count = 64;
     double origin = 0, scale = 0;
     std::array<NodeSet, count> upto, from;
     std::uint32_t slab(double c) const {
