@@ -18,8 +18,12 @@ namespace pear::detail {
 namespace {
 
 bool coordinate_in_range(double c) {
-  const double m = std::fabs(c);
-  return (m == 0.0) | ((m >= min_nonzero_coordinate) & (m <= max_coordinate));
+  // Doubles without their sign order as their bits: one unsigned compare for the range (a bit
+  // pattern below the lowest wraps round to above it); NaN and the infinities lie above.
+  constexpr auto low = std::bit_cast<std::uint64_t>(min_nonzero_coordinate);
+  constexpr auto high = std::bit_cast<std::uint64_t>(max_coordinate);
+  const std::uint64_t m = std::bit_cast<std::uint64_t>(c) & ~(std::uint64_t{1} << 63);
+  return (m == 0) | (m - low <= high - low);
 }
 
 /// Names the first coordinate, from ring `from` on, that is not finite or out of range;

@@ -236,6 +236,31 @@ TEST(EngineInput, HugeAndTinyCoordinatesAreErrors) {
   EXPECT_EQ(triangulate(p).status, Status::ok);
 }
 
+// The range's ends belong to it, the doubles just past them do not, and so on either side of 0
+// (cleaning compares the coordinates' bits, without their sign).
+TEST(EngineInput, TheRangeOfCoordinatesEndsExactlyAtTwoToThe200AndMinus200) {
+  const auto out_of_range = [](double v) {
+    Polygon p = {square(0, 0, 1)};
+    p[0][3].x = v;
+    const auto result = triangulate(p);
+    const bool named = !result.diagnostics.empty() &&
+                       (result.diagnostics[0].issue == Issue::coordinate_out_of_range ||
+                        result.diagnostics[0].issue == Issue::non_finite_coordinate);
+    EXPECT_EQ(named, result.status == Status::invalid_input) << v;
+    return named;
+  };
+  for (const double v : {0x1p200, 0x1p-200, 0.0, 1.0})
+    for (const double sign : {1.0, -1.0}) EXPECT_FALSE(out_of_range(sign * v)) << sign * v;
+  const double past[] = {std::nextafter(0x1p200, INFINITY),
+                         std::nextafter(0x1p-200, 0.0),
+                         std::numeric_limits<double>::denorm_min(),
+                         std::numeric_limits<double>::max(),
+                         INFINITY,
+                         std::numeric_limits<double>::quiet_NaN()};
+  for (const double v : past)
+    for (const double sign : {1.0, -1.0}) EXPECT_TRUE(out_of_range(sign * v)) << sign * v;
+}
+
 TEST(EngineInput, OuterRingTooSmallIsAnError) {
   const auto result = triangulate(Polygon{{{0, 0}, {1, 1}, {0, 0}, {1, 1}}});
   EXPECT_EQ(result.status, Status::invalid_input);
