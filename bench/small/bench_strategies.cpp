@@ -54,7 +54,8 @@ void strategy(benchmark::State& state, std::string kind, std::size_t n, bool que
 
 int main(int argc, char** argv) {
   for (const char* kind : {"random", "star", "koch"})
-    for (std::size_t n : {16u, 32u, 64u, 128u, 256u, 384u, 512u, 768u, 1024u, 1280u, 1536u, 2048u, 4096u})
+    for (std::size_t n :
+         {16u, 32u, 64u, 128u, 256u, 384u, 512u, 768u, 1024u, 1280u, 1536u, 2048u, 4096u})
       for (bool queue : {false, true}) {
         try {
           pear::generate_polygon(kind, n, 7);
