@@ -7,7 +7,7 @@
 // sets in registers) those a SIMD scan of their positions finds in its box (box_scan's
 // points_in_box), past 64 those of the slabs the box meets. No grid, bucket queue or pinch
 // table to set up; each step still scans, so the cost per vertex grows with n
-// (bench_strategies: at 1,024 nodes 0.8-0.9x the queue's time, at 16 a third, at 2,048 up to
+// (bench_strategies: at 1,024 nodes 0.84-0.99x the queue's time, at 16 a third, at 2,048 up to
 // 1.5x; docs/engine.md).
 #pragma once
 
