@@ -32,6 +32,7 @@ class ReflexGrid {
   void build(const Boundary& b, const std::vector<std::uint32_t>& nodes, bool removable = true) {
     if (removable) slot_.resize(b.size());
     extra_.clear();
+    live_ = nodes.size();
     if (nodes.empty()) {
       frame_ = GridFrame{};
       lo_ = {INFINITY, INFINITY};
@@ -72,10 +73,12 @@ class ReflexGrid {
     if (slot_.size() <= node) slot_.resize(node + 1);
     slot_[node] = static_cast<std::uint32_t>(extra_.size()) | extra_bit;
     extra_.push_back({pos, node});
+    ++live_;
   }
 
   /// Takes a node out of the grid (it turned convex or was clipped).
   void remove(std::uint32_t node, const Point& pos) {
+    --live_;
     if (slot_[node] & extra_bit) {
       const std::uint32_t slot = slot_[node] & ~extra_bit;
       extra_[slot] = extra_.back();
@@ -92,9 +95,12 @@ class ReflexGrid {
 
   /// Calls visit(entry) for every node in a cell that triangle (a, b, c) may touch, until visit
   /// returns true; returns whether it did. Per row, only the columns the triangle spans within
-  /// the row's band (plus one on each side for rounding), and only cells that hold nodes.
+  /// the row's band (plus one on each side for rounding), and only cells that hold nodes; none
+  /// once every node has left (what is left of a comb is a strip whose ears span it: each
+  /// walked every row of the grid's empty cells).
   template <class Visit>
   bool any_near_triangle(const Point& a, const Point& b, const Point& c, Visit&& visit) const {
+    if (live_ == 0) return false;
     const auto visit_row = [&](std::size_t first, std::size_t last) {
       return visit_cells(first, last, visit);
     };
@@ -127,6 +133,7 @@ class ReflexGrid {
   FillVector<std::uint32_t> slot_;  ///< node -> its slot in items_, while it is in the grid
   Occupancy occupied_;              ///< which cells hold a live node
   std::vector<Entry> extra_;        ///< nodes added after the build
+  std::size_t live_ = 0;            ///< nodes in the grid (cells and extra_)
   static constexpr std::uint32_t extra_bit = 0x80000000u;
 };
 

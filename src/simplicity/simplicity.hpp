@@ -170,6 +170,7 @@ class SimplicityCheck {
   /// chains_limit, pairs of runs monotone in x; beyond, the grid and the sweep
   /// (find_violation). Measured: docs/engine.md, "Strategies".
   static constexpr std::uint32_t few_edges_limit = 128;
+  static_assert(few_edges_limit % 64 == 0, "check_all_pairs keeps a bit a row in whole words");
   static constexpr std::uint32_t chains_limit = 384;
   /// Past chains_limit the runs are tried first (at most two partitions: they are serial),
   /// and given up for the grid after chains_budget looks per edge.

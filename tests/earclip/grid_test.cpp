@@ -11,6 +11,8 @@
 #include <set>
 #include <vector>
 
+#include "core/boundary.hpp"
+#include "core/reflex_grid.hpp"
 #include "geometry/uniform_grid.hpp"
 #include "pear/predicates.hpp"
 
@@ -95,6 +97,65 @@ TEST_P(GridQuery, FindsEveryPointOfRandomSlivers) {
     with_edges.push_back(b);
     with_edges.push_back(c);
     expect_all_found(frame, with_edges, a, b, c);
+  }
+}
+
+/// ReflexGrid as the clippers use it: nodes leave one by one (in random order, some added late
+/// as a split's copies do), and after every change a query over a triangle finds exactly the
+/// nodes still in the grid inside it, down to none left and back to one added after that (the
+/// query skips an empty grid: its count must follow every add and remove).
+TEST(ReflexGridQuery, FindsTheNodesStillInTheGridAsTheyLeave) {
+  std::mt19937 rng(23);
+  std::uniform_real_distribution<double> coordinate(0.0, 100.0);
+  for (int round = 0; round < 20; ++round) {
+    Boundary b;
+    const std::uint32_t n = 50 + static_cast<std::uint32_t>(rng() % 200);
+    for (std::uint32_t v = 0; v <= n + 20; ++v) b.add({coordinate(rng), coordinate(rng)}, v);
+    std::vector<std::uint32_t> built(n);
+    for (std::uint32_t v = 0; v < n; ++v) built[v] = v;
+    ReflexGrid grid;
+    grid.build(b, built);
+    std::vector<std::uint32_t> in_grid = built;
+    std::uint32_t next_extra = n;
+    const auto expect_found = [&](const char* when) {
+      for (int q = 0; q < 8; ++q) {
+        Point a{coordinate(rng), coordinate(rng)}, c{coordinate(rng), coordinate(rng)};
+        Point t{coordinate(rng), coordinate(rng)};
+        if (orient2d(a, t, c) < 0) std::swap(t, c);
+        std::set<std::uint32_t> expected, found;
+        for (std::uint32_t v : in_grid)
+          if (inside_or_on(a, t, c, b.pos[v])) expected.insert(v);
+        grid.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
+          if (inside_or_on(a, t, c, e.pos)) found.insert(e.node);
+          return false;
+        });
+        ASSERT_EQ(found, expected)
+            << when << ", round " << round << ", " << in_grid.size() << " nodes in the grid";
+      }
+      // The whole square: every node still in the grid, and no other.
+      std::set<std::uint32_t> all;
+      for (const Point& a : {Point{-1, -1}, Point{101, 101}}) {
+        grid.any_near_triangle(a, {101, -1}, {-1, 101}, [&](const ReflexGrid::Entry& e) {
+          all.insert(e.node);
+          return false;
+        });
+      }
+      ASSERT_EQ(all, std::set<std::uint32_t>(in_grid.begin(), in_grid.end())) << when;
+    };
+    expect_found("built");
+    while (!in_grid.empty()) {
+      const std::size_t k = rng() % in_grid.size();
+      grid.remove(in_grid[k], b.pos[in_grid[k]]);
+      in_grid.erase(in_grid.begin() + static_cast<std::ptrdiff_t>(k));
+      if (rng() % 8 == 0 && next_extra < n + 20) {
+        grid.add(next_extra, b.pos[next_extra]);
+        in_grid.push_back(next_extra++);
+      }
+      expect_found("after a removal");
+    }
+    grid.add(next_extra, b.pos[next_extra]);
+    in_grid.push_back(next_extra);
+    expect_found("one added to an empty grid");
   }
 }
 
