@@ -14,60 +14,79 @@
 namespace pear::detail {
 namespace {
 
-bool meets_one(const BoxColumns& c, std::uint32_t f, const Box& b) {
-  const double x0 = c.x0[f], y0 = c.y0[f], x1 = c.x1[f], y1 = c.y1[f];
-  return (x0 <= b.x1) & (b.x0 <= x1) & (y0 <= b.y1) & (b.y0 <= y1);
+/// A row's own box, from the float columns.
+struct FloatBox {
+  float x0, y0, x1, y1;
+};
+
+FloatBox row_box(const BoxColumns& c, std::uint32_t i) {
+  return {c.x0[i], c.y0[i], c.x1[i], c.y1[i]};
 }
 
-bool scalar_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
+bool scalar_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const FloatBox& b) {
   bool met = false;
-  for (std::uint32_t f = from; f < to; ++f) met |= meets_one(c, f, b);
+  for (std::uint32_t f = from; f < to; ++f)
+    met |= (c.x0[f] <= b.x1) & (b.x0 <= c.x1[f]) & (c.y0[f] <= b.y1) & (b.y0 <= c.y1[f]);
   return met;
 }
 
 #if PEAR_BOX_SCAN_X86
-bool sse2_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
-  const __m128d x0 = _mm_set1_pd(b.x0), x1 = _mm_set1_pd(b.x1);
-  const __m128d y0 = _mm_set1_pd(b.y0), y1 = _mm_set1_pd(b.y1);
-  __m128d any = _mm_setzero_pd();
-  std::uint32_t f = from;
-  for (; f + 2 <= to; f += 2) {
-    const __m128d in_x = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&c.x0[f]), x1),
-                                    _mm_cmple_pd(x0, _mm_loadu_pd(&c.x1[f])));
-    const __m128d in_y = _mm_and_pd(_mm_cmple_pd(_mm_loadu_pd(&c.y0[f]), y1),
-                                    _mm_cmple_pd(y0, _mm_loadu_pd(&c.y1[f])));
-    any = _mm_or_pd(any, _mm_and_pd(in_x, in_y));
-  }
-  const bool tail = scalar_meets(c, f, to, b);  // both ends computed: no branch between them
-  return (_mm_movemask_pd(any) != 0) | tail;
-}
-
-/// Lanes whose box of columns [f, f + 4) meets the box of sides x0, x1, y0, y1 (broadcast).
-__attribute__((target("avx2"))) inline __m256d avx2_step(const BoxColumns& c, std::uint32_t f,
-                                                         __m256d x0, __m256d y0, __m256d x1,
-                                                         __m256d y1) {
-  const __m256d in_x = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(&c.x0[f]), x1, _CMP_LE_OQ),
-                                     _mm256_cmp_pd(x0, _mm256_loadu_pd(&c.x1[f]), _CMP_LE_OQ));
-  const __m256d in_y = _mm256_and_pd(_mm256_cmp_pd(_mm256_loadu_pd(&c.y0[f]), y1, _CMP_LE_OQ),
-                                     _mm256_cmp_pd(y0, _mm256_loadu_pd(&c.y1[f]), _CMP_LE_OQ));
-  return _mm256_and_pd(in_x, in_y);
-}
-
 /// Four boxes a step, the lanes past `to` masked off (the columns are padded, so the load stays
 /// inside): no tail loop whose length changes from row to row.
-__attribute__((target("avx2"))) bool avx2_meets(const BoxColumns& c, std::uint32_t from,
-                                                std::uint32_t to, const Box& b) {
-  const __m256d x0 = _mm256_set1_pd(b.x0), x1 = _mm256_set1_pd(b.x1);
-  const __m256d y0 = _mm256_set1_pd(b.y0), y1 = _mm256_set1_pd(b.y1);
-  const __m256i lane = _mm256_setr_epi64x(0, 1, 2, 3);
-  __m256d any = _mm256_setzero_pd();
+bool sse2_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const FloatBox& b) {
+  const __m128 x0 = _mm_set1_ps(b.x0), x1 = _mm_set1_ps(b.x1);
+  const __m128 y0 = _mm_set1_ps(b.y0), y1 = _mm_set1_ps(b.y1);
+  const __m128i lane = _mm_setr_epi32(0, 1, 2, 3);
+  __m128 any = _mm_setzero_ps();
   for (std::uint32_t f = from; f < to; f += 4) {
-    const __m256d valid = _mm256_castsi256_pd(_mm256_cmpgt_epi64(_mm256_set1_epi64x(to - f), lane));
-    any = _mm256_or_pd(any, _mm256_and_pd(valid, avx2_step(c, f, x0, y0, x1, y1)));
+    const __m128 valid =
+        _mm_castsi128_ps(_mm_cmpgt_epi32(_mm_set1_epi32(static_cast<int>(to - f)), lane));
+    const __m128 in_x = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&c.x0[f]), x1),
+                                   _mm_cmple_ps(x0, _mm_loadu_ps(&c.x1[f])));
+    const __m128 in_y = _mm_and_ps(_mm_cmple_ps(_mm_loadu_ps(&c.y0[f]), y1),
+                                   _mm_cmple_ps(y0, _mm_loadu_ps(&c.y1[f])));
+    any = _mm_or_ps(any, _mm_and_ps(valid, _mm_and_ps(in_x, in_y)));
   }
-  return _mm256_movemask_pd(any) != 0;
+  return _mm_movemask_ps(any) != 0;
 }
 
+/// Eight boxes a step, masked as sse2_meets.
+__attribute__((target("avx2"))) bool avx2_meets(const BoxColumns& c, std::uint32_t from,
+                                                std::uint32_t to, const FloatBox& b) {
+  const __m256 x0 = _mm256_set1_ps(b.x0), x1 = _mm256_set1_ps(b.x1);
+  const __m256 y0 = _mm256_set1_ps(b.y0), y1 = _mm256_set1_ps(b.y1);
+  const __m256i lane = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+  __m256 any = _mm256_setzero_ps();
+  for (std::uint32_t f = from; f < to; f += 8) {
+    const __m256 valid =
+        _mm256_castsi256_ps(_mm256_cmpgt_epi32(_mm256_set1_epi32(static_cast<int>(to - f)), lane));
+    const __m256 in_x = _mm256_and_ps(_mm256_cmp_ps(_mm256_loadu_ps(&c.x0[f]), x1, _CMP_LE_OQ),
+                                      _mm256_cmp_ps(x0, _mm256_loadu_ps(&c.x1[f]), _CMP_LE_OQ));
+    const __m256 in_y = _mm256_and_ps(_mm256_cmp_ps(_mm256_loadu_ps(&c.y0[f]), y1, _CMP_LE_OQ),
+                                      _mm256_cmp_ps(y0, _mm256_loadu_ps(&c.y1[f]), _CMP_LE_OQ));
+    any = _mm256_or_ps(any, _mm256_and_ps(valid, _mm256_and_ps(in_x, in_y)));
+  }
+  return _mm256_movemask_ps(any) != 0;
+}
+#endif
+
+#if PEAR_BOX_SCAN_WASM
+/// WebAssembly's 128-bit SIMD (-msimd128): four boxes a step, masked as sse2_meets.
+bool wasm_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const FloatBox& b) {
+  const v128_t x0 = wasm_f32x4_splat(b.x0), x1 = wasm_f32x4_splat(b.x1);
+  const v128_t y0 = wasm_f32x4_splat(b.y0), y1 = wasm_f32x4_splat(b.y1);
+  const v128_t lane = wasm_i32x4_make(0, 1, 2, 3);
+  v128_t any = wasm_i32x4_splat(0);
+  for (std::uint32_t f = from; f < to; f += 4) {
+    const v128_t valid = wasm_i32x4_gt(wasm_i32x4_splat(static_cast<int>(to - f)), lane);
+    const v128_t in_x = wasm_v128_and(wasm_f32x4_le(wasm_v128_load(&c.x0[f]), x1),
+                                      wasm_f32x4_le(x0, wasm_v128_load(&c.x1[f])));
+    const v128_t in_y = wasm_v128_and(wasm_f32x4_le(wasm_v128_load(&c.y0[f]), y1),
+                                      wasm_f32x4_le(y0, wasm_v128_load(&c.y1[f])));
+    any = wasm_v128_or(any, wasm_v128_and(valid, wasm_v128_and(in_x, in_y)));
+  }
+  return wasm_v128_any_true(any);
+}
 #endif
 
 /// The bits of [0, count), count <= 64.
@@ -85,23 +104,6 @@ std::uint64_t scalar_in_box(const double* xs, const double* ys, std::uint32_t co
 }
 
 #if PEAR_BOX_SCAN_WASM
-/// WebAssembly's 128-bit SIMD (-msimd128): two boxes a step, as SSE2 does.
-bool wasm_meets(const BoxColumns& c, std::uint32_t from, std::uint32_t to, const Box& b) {
-  const v128_t x0 = wasm_f64x2_splat(b.x0), x1 = wasm_f64x2_splat(b.x1);
-  const v128_t y0 = wasm_f64x2_splat(b.y0), y1 = wasm_f64x2_splat(b.y1);
-  v128_t any = wasm_f64x2_splat(0.0);
-  std::uint32_t f = from;
-  for (; f + 2 <= to; f += 2) {
-    const v128_t in_x = wasm_v128_and(wasm_f64x2_le(wasm_v128_load(&c.x0[f]), x1),
-                                      wasm_f64x2_le(x0, wasm_v128_load(&c.x1[f])));
-    const v128_t in_y = wasm_v128_and(wasm_f64x2_le(wasm_v128_load(&c.y0[f]), y1),
-                                      wasm_f64x2_le(y0, wasm_v128_load(&c.y1[f])));
-    any = wasm_v128_or(any, wasm_v128_and(in_x, in_y));
-  }
-  const bool tail = scalar_meets(c, f, to, b);
-  return wasm_v128_any_true(any) | tail;
-}
-
 /// Two points a step; the lanes past `count` read padding and are masked off.
 std::uint64_t wasm_in_box(const double* xs, const double* ys, std::uint32_t count, const Box& b) {
   const v128_t x0 = wasm_f64x2_splat(b.x0), x1 = wasm_f64x2_splat(b.x1);
@@ -162,7 +164,7 @@ template <class Meets>
                                              std::span<std::uint64_t> meets, Meets&& scan) {
   for (std::size_t k = 0; k < rows.size(); ++k) {
     const RowRanges& r = rows[k];
-    const Box b = c.box(r.row);
+    const FloatBox b = row_box(c, r.row);
     // The second range is empty but for a ring's first edge (a polygon with holes).
     const bool first = scan(c, r.from, r.to, b);
     const bool second = r.from2 < r.to2 && scan(c, r.from2, r.to2, b);

@@ -1,12 +1,15 @@
 // Box tests over columns of coordinates: for each row (a box), whether any box in its ranges
 // meets it (the simplicity check of few edges), and which of up to 64 points lie in a box (the
 // bit-set clipper's ear test). Most rows meet nothing (2% of the counties' rows do), so the cost
-// is the comparisons: four boxes a step with AVX2 where the processor has it (chosen at run
-// time), two with SSE2 (x86-64's baseline) or WebAssembly's SIMD128 (-msimd128), one elsewhere,
-// all without a branch on the data.
+// is the comparisons, all without a branch on the data: the rows in floats (a filter that never
+// misses: rounding is monotone, so doubles a <= b give floats a <= b, and boxes that meet in
+// doubles meet in floats), eight boxes a step with AVX2 where the processor has it (chosen at
+// run time), four with SSE2 (x86-64's baseline) or WebAssembly's SIMD128 (-msimd128), one
+// elsewhere; the points in doubles, four or two a step.
 // Intrinsics, not GCC's vector types, whose comparison masks GCC 12 takes apart lane by lane.
 // The columns are the caller's, sized for its own limits; they must be readable up to a
-// multiple of four entries (padding), since the lanes past the end are loaded and masked off.
+// multiple of eight entries (rows) or four (points): the lanes past the end are loaded and
+// masked off.
 #pragma once
 
 #include <array>
@@ -20,10 +23,11 @@ struct Box {
   double x0, y0, x1, y1;
 };
 
-/// Boxes as a column per side (the caller's arrays, padded by at least three entries).
+/// Boxes as a column per side in floats, each side a double rounded (to nearest, or any
+/// monotone rounding: rows_meeting then finds every row whose boxes meet in doubles, and maybe
+/// a few more); the caller's arrays, padded by at least seven entries.
 struct BoxColumns {
-  const double *x0, *y0, *x1, *y1;
-  Box box(std::uint32_t i) const { return {x0[i], y0[i], x1[i], y1[i]}; }
+  const float *x0, *y0, *x1, *y1;
 };
 
 /// The boxes row `row` is tested against: [from, to) and [from2, to2) (empty ranges allowed).
@@ -36,7 +40,7 @@ struct RowRanges {
 enum class BoxScan : std::uint8_t { best, sse2, scalar };
 
 /// Sets bit k of `meets` (rows.size() bits, in 64-bit words, cleared first) when the box of
-/// rows[k].row meets any box in its ranges.
+/// rows[k].row meets any box in its ranges (closed boxes, compared as floats).
 void rows_meeting(const BoxColumns& columns, std::span<const RowRanges> rows,
                   std::span<std::uint64_t> meets, BoxScan scan = BoxScan::best);
 

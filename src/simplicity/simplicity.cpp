@@ -312,16 +312,24 @@ Verdict verdict_of(std::uint32_t smallest, bool touching) {
 }  // namespace
 
 /// Every pair of edges that are not neighbours, by branch-free box tests of rows (an edge
-/// against the edges after it), then the exact tests for the few rows where boxes meet; up to
-/// pair_by_pair_limit edges pair by pair.
+/// against the edges after it) in floats, then the exact tests for the few rows where boxes
+/// meet; up to pair_by_pair_limit edges pair by pair. The float boxes are taken relative to the
+/// first point (a county's coordinates are degrees, a building's metres in the millions, its
+/// extent small) and rounded: twice the boxes a step of doubles, and no row missed (the
+/// subtraction and the rounding are both monotone, so the boxes that meet still meet).
 Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_crossings) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   if (n <= pair_by_pair_limit) return check_pair_by_pair(polygon, find_crossings);
   // References, not a structured binding: clang 14 cannot capture bindings in a lambda.
   auto &x0 = columns_[0], &y0 = columns_[1], &x1 = columns_[2], &y1 = columns_[3];
+  auto &fx0 = float_columns_[0], &fy0 = float_columns_[1];
+  auto &fx1 = float_columns_[2], &fy1 = float_columns_[3];
+  const Point origin = polygon.points[0];
   link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
     x0[e] = std::min(a.x, b.x), y0[e] = std::min(a.y, b.y);
     x1[e] = std::max(a.x, b.x), y1[e] = std::max(a.y, b.y);
+    fx0[e] = static_cast<float>(x0[e] - origin.x), fy0[e] = static_cast<float>(y0[e] - origin.y);
+    fx1[e] = static_cast<float>(x1[e] - origin.x), fy1[e] = static_cast<float>(y1[e] - origin.y);
   });
   // Edge e of ring [first, end) meets the edges after it but e + 1 (unless e ends the ring)
   // and, for e == first, end - 1. Neighbours conflict only by folding back at their shared
@@ -334,9 +342,8 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
     const std::uint32_t start = e + 1 == end ? e + 1 : e + 2;
     rows_.push_back({e, start, e == first ? end - 1 : n, e == first ? end : n, n});
   }
-  const BoxColumns c{x0.data(), y0.data(), x1.data(), y1.data()};
   std::array<std::uint64_t, few_edges_limit / 64> meets;
-  rows_meeting(c, rows_, meets);
+  rows_meeting(BoxColumns{fx0.data(), fy0.data(), fx1.data(), fy1.data()}, rows_, meets);
   // A row is looked at again only when a box meets (2% of the rows of the counties); the boxes
   // are copied for the exact tests only then.
   std::uint32_t smallest = SmallestViolation::none;
@@ -346,10 +353,10 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
       const RowRanges& r = rows_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(set))];
       if (!indexed) {
         edges_.boxes.resize(n);
-        for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = c.box(i);
+        for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = {x0[i], y0[i], x1[i], y1[i]};
         indexed = true;
       }
-      const Box box = c.box(r.row);
+      const Box& box = edges_.boxes[r.row];
       for (const auto& [from, to] : {std::pair(r.from, r.to), std::pair(r.from2, r.to2)})
         for (std::uint32_t f = from; f < to; ++f)
           if (x0[f] <= box.x1 && box.x0 <= x1[f])

@@ -190,23 +190,25 @@ void expect_agreement(const CleanPolygon& polygon, const Contexts& contexts) {
 
 /// The small check's box scan (geometry/box_scan.hpp) gives the same rows with AVX2 (where
 /// the processor has it), SSE2 and plain comparisons, and each row's bit says exactly whether a
-/// box in its ranges meets it: ranges of every length from 0 to the capacity, touching boxes,
-/// and coordinates of every magnitude.
+/// box in its ranges meets it: ranges of every length from 0 to the capacity (eight-wide steps
+/// and their masked ends), touching boxes, coordinates of every magnitude a float has.
 TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
   std::mt19937 rng(5);
   std::uniform_int_distribution<int> coordinate(0, 40), length(0, 6);
   constexpr std::uint32_t capacity = 128;
-  std::array<std::array<double, capacity + 4>, 4> columns{};
+  std::array<std::array<float, capacity + 8>, 4> columns{};
   auto& [x0, y0, x1, y1] = columns;
   const BoxColumns c{x0.data(), y0.data(), x1.data(), y1.data()};
   for (int round = 0; round < 300; ++round) {
     const std::uint32_t n = 1 + static_cast<std::uint32_t>(rng() % capacity);
-    const double scale = round % 3 == 0 ? 0x1p-180 : round % 3 == 1 ? 1.0 : 0x1p180;
+    const float scale = round % 3 == 0 ? 0x1p-120f : round % 3 == 1 ? 1.0f : 0x1p100f;
     for (std::uint32_t i = 0; i < n; ++i) {
-      const double x = coordinate(rng), y = coordinate(rng);
-      x0[i] = x * scale, x1[i] = (x + length(rng)) * scale;
-      y0[i] = y * scale, y1[i] = (y + length(rng)) * scale;
+      const auto x = static_cast<float>(coordinate(rng)), y = static_cast<float>(coordinate(rng));
+      x0[i] = x * scale, x1[i] = (x + static_cast<float>(length(rng))) * scale;
+      y0[i] = y * scale, y1[i] = (y + static_cast<float>(length(rng))) * scale;
     }
+    // Past n: boxes that meet everything, which the masks must keep out.
+    for (std::uint32_t i = n; i < x0.size(); ++i) x0[i] = y0[i] = -1e30f, x1[i] = y1[i] = 1e30f;
     std::vector<RowRanges> rows;
     for (std::uint32_t k = 0; k < 2 * n; ++k) {
       const std::uint32_t a = rng() % (n + 1), b = rng() % (n + 1), d = rng() % (n + 1);
@@ -218,21 +220,71 @@ TEST(BoxScan, InstructionSetsAgreeWithBruteForce) {
     rows_meeting(c, rows, best, BoxScan::best);
     rows_meeting(c, rows, sse2, BoxScan::sse2);
     rows_meeting(c, rows, scalar, BoxScan::scalar);
+    const auto meets = [&](std::uint32_t e, std::uint32_t f) {
+      return c.x0[f] <= c.x1[e] && c.x0[e] <= c.x1[f] && c.y0[f] <= c.y1[e] && c.y0[e] <= c.y1[f];
+    };
     for (std::size_t k = 0; k < rows.size(); ++k) {
       const RowRanges& r = rows[k];
       bool expected = false;
-      for (std::uint32_t f = r.from; f < r.to; ++f)
-        expected |= c.x0[f] <= c.x1[r.row] && c.x0[r.row] <= c.x1[f] && c.y0[f] <= c.y1[r.row] &&
-                    c.y0[r.row] <= c.y1[f];
-      for (std::uint32_t f = r.from2; f < r.to2; ++f)
-        expected |= c.x0[f] <= c.x1[r.row] && c.x0[r.row] <= c.x1[f] && c.y0[f] <= c.y1[r.row] &&
-                    c.y0[r.row] <= c.y1[f];
+      for (std::uint32_t f = r.from; f < r.to; ++f) expected |= meets(r.row, f);
+      for (std::uint32_t f = r.from2; f < r.to2; ++f) expected |= meets(r.row, f);
       SCOPED_TRACE("round " + std::to_string(round) + " row " + std::to_string(k));
       ASSERT_EQ((best[k / 64] >> (k % 64)) & 1, expected);
       ASSERT_EQ((sse2[k / 64] >> (k % 64)) & 1, expected);
       ASSERT_EQ((scalar[k / 64] >> (k % 64)) & 1, expected);
     }
   }
+}
+
+/// Boxes in doubles rounded to floats, as the check rounds them (relative to a first point,
+/// then to nearest): every pair that meets in doubles still meets, however close the boxes
+/// (touching exactly, apart or overlapping by one unit of a double), however large the
+/// coordinates against the distances (2^-200 to 2^200, far from the first point), and pairs
+/// apart by more than a float's rounding stay apart, so the float rows filter.
+TEST(BoxScan, FloatBoxesMeetWhereDoubleBoxesMeet) {
+  std::mt19937_64 rng(17);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::size_t met = 0, apart_kept = 0, apart = 0;
+  for (int round = 0; round < 20000; ++round) {
+    const double scale = std::ldexp(1.0, static_cast<int>(rng() % 401) - 200);
+    const double offset = (round % 3 == 0 ? 1e6 : round % 3 == 1 ? -3.5 : 0.0) * scale;
+    const Point origin{offset + unit(rng) * scale, offset - unit(rng) * scale};
+    Box s{offset + unit(rng) * scale, offset + unit(rng) * scale, 0, 0};
+    s.x1 = s.x0 + unit(rng) * scale, s.y1 = s.y0 + unit(rng) * scale;
+    // t starts where s ends, one double unit before or after, or anywhere.
+    Box t = s;
+    const int kind = static_cast<int>(rng() % 4);
+    const double start = kind == 3 ? offset + unit(rng) * 2 * scale : s.x1;
+    t.x0 = kind == 1   ? std::nextafter(start, -INFINITY)
+           : kind == 2 ? std::nextafter(start, INFINITY)
+                       : start;
+    t.x1 = t.x0 + unit(rng) * scale;
+    const bool meet = t.x0 <= s.x1 && s.x0 <= t.x1 && t.y0 <= s.y1 && s.y0 <= t.y1;
+    std::array<std::array<float, 8>, 4> columns{};
+    auto& [x0, y0, x1, y1] = columns;
+    for (const auto& [i, b] : {std::pair(0, s), std::pair(1, t)}) {
+      x0[i] = static_cast<float>(b.x0 - origin.x), y0[i] = static_cast<float>(b.y0 - origin.y);
+      x1[i] = static_cast<float>(b.x1 - origin.x), y1[i] = static_cast<float>(b.y1 - origin.y);
+    }
+    const std::array<RowRanges, 1> rows{{{0, 1, 2, 2, 2}}};
+    std::array<std::uint64_t, 1> flagged{};
+    rows_meeting(BoxColumns{x0.data(), y0.data(), x1.data(), y1.data()}, rows, flagged);
+    SCOPED_TRACE(round);
+    if (meet) {
+      ++met;
+      ASSERT_EQ(flagged[0], 1u) << "boxes that meet in doubles must meet in floats";
+    } else {
+      // Apart by more than a float's rounding of either side (and within a float's range).
+      const double u = std::fabs(s.x1 - origin.x), v = std::fabs(t.x0 - origin.x);
+      if (std::max(u, v) < 0x1p120 && t.x0 - s.x1 > (u + v) * 0x1p-22 + 0x1p-148) {
+        ++apart;
+        apart_kept += flagged[0] == 0;
+      }
+    }
+  }
+  EXPECT_GT(met, 5000u);
+  EXPECT_GT(apart, 1000u);
+  EXPECT_EQ(apart_kept, apart) << "boxes well apart stay apart in floats";
 }
 
 /// points_in_box (the small clipper's ear test) sets exactly the bits of the points in the
