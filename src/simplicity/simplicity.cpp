@@ -324,6 +324,9 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
   auto &x0 = columns_[0], &y0 = columns_[1], &x1 = columns_[2], &y1 = columns_[3];
   auto &fx0 = float_columns_[0], &fy0 = float_columns_[1];
   auto &fx1 = float_columns_[2], &fy1 = float_columns_[3];
+  // IEEE floats: a double past a float's range rounds to the infinity on its side, monotone
+  // still (never undefined: each double lies between two adjacent floats, infinities included).
+  static_assert(std::numeric_limits<float>::is_iec559);
   const Point origin = polygon.points[0];
   link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
     x0[e] = std::min(a.x, b.x), y0[e] = std::min(a.y, b.y);
