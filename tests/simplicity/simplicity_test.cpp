@@ -260,7 +260,7 @@ TEST(BoxScan, FloatBoxesMeetWhereDoubleBoxesMeet) {
                        : start;
     t.x1 = t.x0 + unit(rng) * scale;
     const bool meet = t.x0 <= s.x1 && s.x0 <= t.x1 && t.y0 <= s.y1 && s.y0 <= t.y1;
-    std::array<std::array<float, 8>, 4> columns{};
+    std::array<std::array<float, 16>, 4> columns{};  // read up to 7 past the range
     auto& [x0, y0, x1, y1] = columns;
     for (const auto& [i, b] : {std::pair(0, s), std::pair(1, t)}) {
       x0[i] = static_cast<float>(b.x0 - origin.x), y0[i] = static_cast<float>(b.y0 - origin.y);
