@@ -122,10 +122,21 @@ struct Verdict {
 };
 
 /// The grid over the whole polygon, kept between calls for its buffers.
+/// The cells a box covers in a grid: columns c0..c1, rows r0..r1.
+struct CellRange {
+  int c0, c1, r0, r1;
+  std::size_t size() const {
+    return static_cast<std::size_t>(c1 - c0 + 1) * static_cast<std::size_t>(r1 - r0 + 1);
+  }
+};
+
 struct RootGrid {
   GridFrame frame;
   std::vector<std::uint32_t> cell_start, items;
   std::vector<std::uint32_t> chunk_counts;  ///< per chunk of edges and cell, for filling
+  /// Each edge's cells: found by the count, read by the fill (written in full before they are
+  /// read, in tasks).
+  FillVector<CellRange> ranges;
 };
 
 /// Checks every pair of edges sharing a cell; offers the smallest edge of each conflict found,

@@ -11,38 +11,37 @@
 namespace pear::detail {
 namespace {
 
-struct CellRange {
-  int c0, c1, r0, r1;
-  std::size_t size() const {
-    return static_cast<std::size_t>(c1 - c0 + 1) * static_cast<std::size_t>(r1 - r0 + 1);
-  }
-};
-
 CellRange cells_of(const GridFrame& frame, const EdgeBox& box) {
   return {frame.column(box.x0), frame.column(box.x1), frame.row(box.y0), frame.row(box.y1)};
 }
 
 /// Counting sort of the edges into the cells their boxes cover; within a cell they stay in the
 /// order given. False (buckets unusable) when that would make more than max_entries entries.
+/// Each edge's cells are found once, kept in `ranges` between the count and the fill (on
+/// Koch-8 finding them again was a quarter of the buckets' instructions).
 template <class ForEachEdge>
 bool bucket_edges(const GridFrame& frame, std::span<const EdgeBox> boxes,
                   ForEachEdge&& for_each_edge, std::size_t max_entries,
-                  std::vector<std::uint32_t>& cell_start, std::vector<std::uint32_t>& items) {
+                  std::vector<std::uint32_t>& cell_start, std::vector<std::uint32_t>& items,
+                  std::vector<CellRange>& ranges) {
   // Counts go two places up, so that filling with cell_start[c + 1]++ leaves the starts.
   cell_start.assign(frame.cell_count() + 2, 0);
+  ranges.clear();
   std::size_t entries = 0;
   for_each_edge([&](std::uint32_t e) {
-    const CellRange r = cells_of(frame, boxes[e]);
-    entries += r.size();
     if (entries > max_entries) return;
+    const CellRange r = cells_of(frame, boxes[e]);
+    ranges.push_back(r);
+    entries += r.size();
     for (int row = r.r0; row <= r.r1; ++row)
       for (int col = r.c0; col <= r.c1; ++col) ++cell_start[frame.cell(col, row) + 2];
   });
   if (entries > max_entries) return false;
   for (std::size_t c = 2; c < cell_start.size(); ++c) cell_start[c] += cell_start[c - 1];
   items.resize(entries);
+  const CellRange* range = ranges.data();
   for_each_edge([&](std::uint32_t e) {
-    const CellRange r = cells_of(frame, boxes[e]);
+    const CellRange r = *range++;
     for (int row = r.r0; row <= r.r1; ++row)
       for (int col = r.c0; col <= r.c1; ++col) items[cell_start[frame.cell(col, row) + 1]++] = e;
   });
@@ -63,6 +62,7 @@ struct Level {
   GridFrame frame;
   int column = 0, row = 0;  ///< the cell of this grid the search is in
   std::vector<std::uint32_t> cell_start, items;
+  std::vector<CellRange> ranges;  ///< bucket_edges' scratch
 };
 
 /// Checks cells of the root grid one after another, descending into finer grids; one per task.
@@ -139,7 +139,7 @@ class CellSearch {
       for (std::uint32_t e : list) visit(e);
     };
     if (!bucket_edges(child.frame, edges_.boxes, for_each_edge, max_entries, child.cell_start,
-                      child.items))
+                      child.items, child.ranges))
       return false;
     budget_ -= child.items.size();
     // Worth it only if the pairs to test drop well: not so where the boxes overlap each other.
@@ -224,11 +224,14 @@ bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunConte
   root.chunk_counts.resize(chunks * cells);
   std::vector<std::size_t> chunk_entries(chunks, 0);
   std::vector<char> too_many(chunks, false);
-  // Visits each edge of a chunk (its entry count: false stops) and then its entries.
-  const auto for_each_entry = [&](std::size_t chunk, auto&& edge, auto&& entry) {
+  // Visits each edge of a chunk (its entry count: false stops) and then its entries. The count
+  // finds each edge's cells and keeps them for the fill (root.ranges).
+  root.ranges.resize(n);
+  const auto for_each_entry = [&](std::size_t chunk, bool counting, auto&& edge, auto&& entry) {
     const auto [first, last] = piece(chunk, chunks, n);
     for (std::size_t e = first; e < last; ++e) {
-      const CellRange r = cells_of(root.frame, edges.boxes[e]);
+      const CellRange r =
+          counting ? (root.ranges[e] = cells_of(root.frame, edges.boxes[e])) : root.ranges[e];
       if (!edge(r.size())) return;
       for (int row = r.r0; row <= r.r1; ++row)
         for (int col = r.c0; col <= r.c1; ++col)
@@ -242,7 +245,8 @@ bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunConte
     const double max_entries = entries_per_edge * static_cast<double>(last - first);
     std::size_t entries = 0;
     for_each_entry(
-        chunk, [&](std::size_t k) { return static_cast<double>(entries += k) <= max_entries; },
+        chunk, true,
+        [&](std::size_t k) { return static_cast<double>(entries += k) <= max_entries; },
         [](std::uint32_t& count, std::uint32_t) { ++count; });
     chunk_entries[chunk] = entries;
     too_many[chunk] = static_cast<double>(entries) > max_entries;
@@ -273,7 +277,7 @@ bool bucket_root(const RingEdges& edges, double entries_per_edge, const RunConte
   root.items.resize(entries);
   ctx.run_tasks("check simplicity: root grid fill", chunks, [&](std::size_t chunk) {
     for_each_entry(
-        chunk, [](std::size_t) { return true; },
+        chunk, false, [](std::size_t) { return true; },
         [&](std::uint32_t& at, std::uint32_t e) { root.items[at++] = e; });
   });
   return true;
