@@ -321,18 +321,17 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
   if (n <= pair_by_pair_limit) return check_pair_by_pair(polygon, find_crossings);
   // References, not a structured binding: clang 14 cannot capture bindings in a lambda.
-  auto &x0 = columns_[0], &y0 = columns_[1], &x1 = columns_[2], &y1 = columns_[3];
-  auto &fx0 = float_columns_[0], &fy0 = float_columns_[1];
-  auto &fx1 = float_columns_[2], &fy1 = float_columns_[3];
+  auto &x0 = float_columns_[0], &y0 = float_columns_[1];
+  auto &x1 = float_columns_[2], &y1 = float_columns_[3];
   // IEEE floats: a double past a float's range rounds to the infinity on its side, monotone
   // still (never undefined: each double lies between two adjacent floats, infinities included).
   static_assert(std::numeric_limits<float>::is_iec559);
   const Point origin = polygon.points[0];
   link_edges(polygon, edges_, false, [&](std::uint32_t e, const Point& a, const Point& b) {
-    x0[e] = std::min(a.x, b.x), y0[e] = std::min(a.y, b.y);
-    x1[e] = std::max(a.x, b.x), y1[e] = std::max(a.y, b.y);
-    fx0[e] = static_cast<float>(x0[e] - origin.x), fy0[e] = static_cast<float>(y0[e] - origin.y);
-    fx1[e] = static_cast<float>(x1[e] - origin.x), fy1[e] = static_cast<float>(y1[e] - origin.y);
+    x0[e] = static_cast<float>(std::min(a.x, b.x) - origin.x);
+    y0[e] = static_cast<float>(std::min(a.y, b.y) - origin.y);
+    x1[e] = static_cast<float>(std::max(a.x, b.x) - origin.x);
+    y1[e] = static_cast<float>(std::max(a.y, b.y) - origin.y);
   });
   // Edge e of ring [first, end) meets the edges after it but e + 1 (unless e ends the ring)
   // and, for e == first, end - 1. Neighbours conflict only by folding back at their shared
@@ -346,23 +345,26 @@ Verdict SimplicityCheck::check_all_pairs(const CleanPolygon& polygon, bool find_
     rows_.push_back({e, start, e == first ? end - 1 : n, e == first ? end : n, n});
   }
   std::array<std::uint64_t, few_edges_limit / 64> meets;
-  rows_meeting(BoxColumns{fx0.data(), fy0.data(), fx1.data(), fy1.data()}, rows_, meets);
-  // A row is looked at again only when a box meets (2% of the rows of the counties); the boxes
-  // are copied for the exact tests only then.
+  rows_meeting(BoxColumns{x0.data(), y0.data(), x1.data(), y1.data()}, rows_, meets);
+  // A row is looked at again only when a box meets (2% of the rows of the counties); the exact
+  // boxes are made for the exact tests only then.
   std::uint32_t smallest = SmallestViolation::none;
   bool touching = false, indexed = false;
   for (std::uint32_t w = 0; w < meets.size(); ++w) {
     for (std::uint64_t set = meets[w]; set != 0; set &= set - 1) {
       const RowRanges& r = rows_[w * 64 + static_cast<std::uint32_t>(std::countr_zero(set))];
+      const auto& boxes = edges_.boxes;
       if (!indexed) {
         edges_.boxes.resize(n);
-        for (std::uint32_t i = 0; i < n; ++i) edges_.boxes[i] = {x0[i], y0[i], x1[i], y1[i]};
+        const auto& pts = polygon.points;
+        for (std::uint32_t i = 0; i < n; ++i)
+          edges_.boxes[i] = edge_box(pts[i], pts[edges_.next[i]]);
         indexed = true;
       }
-      const Box& box = edges_.boxes[r.row];
+      const Box& box = boxes[r.row];
       for (const auto& [from, to] : {std::pair(r.from, r.to), std::pair(r.from2, r.to2)})
         for (std::uint32_t f = from; f < to; ++f)
-          if (x0[f] <= box.x1 && box.x0 <= x1[f])
+          if (boxes[f].x0 <= box.x1 && box.x0 <= boxes[f].x1)
             visit_pair(edges_, r.row, f, find_crossings, smallest, touching);
     }
   }

@@ -293,9 +293,8 @@ class SimplicityCheck {
   FillVector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1
   std::vector<Point> sorted_points_;   ///< repeats_a_position's copy
 
-  /// check_all_pairs' edge boxes, a column per side, in doubles and in floats (padded for
-  /// eight-wide loads), and the pairs to test as rows (geometry/box_scan.hpp).
-  std::array<std::array<double, few_edges_limit>, 4> columns_{};
+  /// check_all_pairs' edge boxes in floats, a column per side (padded for eight-wide loads),
+  /// and the pairs to test as rows (geometry/box_scan.hpp).
   std::array<std::array<float, few_edges_limit + 8>, 4> float_columns_{};
   std::vector<RowRanges> rows_;
 };
