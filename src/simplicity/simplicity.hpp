@@ -255,8 +255,16 @@ class SimplicityCheck {
     bool touching = false;
     bool over_budget = false;
   };
-  RunWalk walk_runs(std::size_t first, std::size_t last, bool find_crossings, std::size_t budget,
+  /// A pair of runs, `run` before `other` in chains_: where a walk over the pairs starts or ends.
+  struct PairAt {
+    std::size_t run, other;
+  };
+  RunWalk walk_runs(PairAt from, PairAt to, bool find_crossings, std::size_t budget,
                     std::atomic<std::size_t>& spent) const;
+  /// The pairs a walk over every run looks at, counted in tasks: pairs_before_[i], the pairs of
+  /// runs before run i (the last entry all of them).
+  void count_run_pairs(const RunContext& ctx);
+  PairAt pair_at(std::size_t pair) const;
   Verdict check_few_chains(const CleanPolygon& polygon, bool find_crossings);
   std::optional<Verdict> check_chains(const CleanPolygon& polygon, const RunContext& ctx);
   bool monotone_chains(const CleanPolygon& polygon, std::size_t min_chain_edges);
@@ -286,8 +294,9 @@ class SimplicityCheck {
   }
   // The runs' FillVectors are written in full after every resize (in tasks on large polygons).
   FillVector<Chain> chains_;
-  std::vector<std::uint32_t> run_start_;  ///< each ring's first run's first edge (in parts)
-  std::optional<std::size_t> reversals_;  ///< x_reversals_counted()
+  std::vector<std::uint32_t> run_start_;   ///< each ring's first run's first edge (in parts)
+  std::vector<std::size_t> pairs_before_;  ///< count_run_pairs
+  std::optional<std::size_t> reversals_;   ///< x_reversals_counted()
   FillVector<std::uint32_t> chain_order_;
   FillVector<EdgeBox> chain_boxes_;    ///< the edges' boxes in chain_order_
   FillVector<std::int8_t> direction_;  ///< each edge's direction in x: -1, 0 or +1

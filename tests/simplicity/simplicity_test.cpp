@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <numeric>
 #include <random>
 #include <span>
@@ -524,7 +525,57 @@ TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
           return p.name == "check simplicity: run pairs";
         });
         ASSERT_NE(pairs, profile.phases.end());
-        EXPECT_GT(pairs->task_seconds.size(), 1u);
+        // On one partition one walk; in parts tasks of equal pair counts.
+        EXPECT_EQ(pairs->task_seconds.size() > 1, PEAR_HAS_THREADS && partitions > 1);
+      }
+    }
+  }
+}
+
+/// The pairs of runs cut into tasks inside one run's pairs: an outer square, whose two runs
+/// span every hole's in x and y, around a grid of octagons (two runs each). With a crossing near
+/// the first runs, one near the last and none, at 2 to 64 partitions (up to 62 tasks of about
+/// 4,100 pairs, the square's 6,400 pairs cut among them), the smallest edge in any conflict as
+/// the grid alone finds it.
+TEST(Simplicity, RunPairsCutInsideARunsPairsFindTheSmallestConflict) {
+  constexpr int side = 40;
+  Polygon made{Ring{{0, 0}, {100, 0}, {100, 100}, {0, 100}}};
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j) {
+      Ring hole;
+      for (int k = 8; k > 0; --k) {  // clockwise
+        const double angle = k * std::numbers::pi / 4 + 0.1;
+        hole.push_back(
+            {2.5 * i + 1.25 + 0.8 * std::cos(angle), 2.5 * j + 1.25 + 0.8 * std::sin(angle)});
+      }
+      made.push_back(hole);
+    }
+  ASSERT_LE(x_reversals(cleaned(made)) * 3, cleaned(made).points.size()) << "the runs are tried";
+  const ThreadContexts contexts;
+  for (int variant = 0; variant < 3; ++variant) {
+    Polygon polygon = made;
+    if (variant == 1) polygon[1][2] = {1.25, -1};       // the first hole reaches below the square
+    if (variant == 2) polygon.back()[4] = {99.5, 101};  // the last one above it
+    SCOPED_TRACE("variant " + std::to_string(variant));
+    const CleanPolygon clean = cleaned(polygon);
+    SimplicityCheck check;
+    const auto by_grid = check.find_violation(clean, RunContext{}, Method::grid_only);
+    ASSERT_EQ(by_grid.has_value(), variant > 0);
+    for (const RunContext& given : contexts.list) {
+      for (std::uint32_t partitions : {2u, 3u, 16u, 64u}) {
+        RunProfile profile;
+        RunContext ctx = given;
+        ctx.partitions = partitions;
+        ctx.profile = &profile;
+        const Verdict verdict = check.check(clean, ctx, true);
+        EXPECT_EQ(verdict.violation, by_grid) << partitions << " partitions";
+        if (!by_grid) {
+          EXPECT_EQ(verdict.touching, Verdict::Touching::no);
+        }
+        const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
+          return p.name == "check simplicity: run pairs";
+        });
+        ASSERT_NE(pairs, profile.phases.end()) << "decided by the runs";
       }
     }
   }
