@@ -35,8 +35,10 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   std::vector<std::uint32_t> unjoined;
   redone_ = 0;
   edges_split_ = false;
+  bridges_indexed_ = false;
   repeated_.clear();
   changed_cells_.clear();
+  rows_with_added_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
   // Without threads the joining in parts would give the same boundary at more cost (and
@@ -52,6 +54,7 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   order_holes(polygon, ctx, true);
   build_grid(polygon, ctx, true);
   find_all(ctx);
+  index_found_bridges(ctx);
   ctx.run_serial("bridge: splice", [&] { splice_all(polygon, true, unjoined); });
   return unjoined;
 }
@@ -82,13 +85,17 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
   };
   if (!PEAR_HAS_THREADS || !parallel) {  // a build without threads keeps no tasks (.wasm)
     detail::sort(holes_.begin(), holes_.end(), before);
+    rank_.reserve(most_ids());
     rank_.resize(polygon.points.size());
     assign_ranks(polygon, 0, holes);
     return;
   }
   // A total order (ties by node): the same order in any number of parts.
   sort_in_parts(ctx, "bridge: sort holes", "bridge: merge holes", holes_, before, 256);
-  ctx.run_serial("bridge: rank array", [&] { rank_.resize(polygon.points.size()); });
+  ctx.run_serial("bridge: rank array", [&] {
+    rank_.reserve(most_ids());
+    rank_.resize(polygon.points.size());
+  });
   const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
   ctx.run_tasks("bridge: ranks", tasks, [&](std::size_t t) {
     assign_ranks(polygon, holes * t / tasks, holes * (t + 1) / tasks);
@@ -120,36 +127,44 @@ void HoleBridger::find_all(const RunContext& ctx) {
 /// Joins the holes in rank order. A hole found in parallel keeps what was found unless the
 /// serial search would now see something else: a bridge added since crossing its ray at or
 /// before the edge it hit (bridges add no node positions, so the visible vertex depends only
-/// on that edge), or a splice that moved edge ids or left a ring out.
+/// on that edge), or a splice that moved edge ids or left a ring out. Which found bridges may
+/// cross its ray was worked out in parallel (maybe_crossed_); only the bridges of holes found
+/// again are looked up here in any case.
 void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel,
                              std::vector<std::uint32_t>& unjoined) {
   bool stale = false;  // found_ was computed with a ring that is now left out
   found_in_parallel = PEAR_HAS_THREADS && found_in_parallel;  // the .wasm keeps no such path
-  if (found_in_parallel) changed_cells_.assign(node_cells_.head.size(), 0);
+  reserve_for_splices();
+  if (found_in_parallel) {
+    changed_cells_.assign(node_cells_.head.size(), 0);
+    rows_with_added_.assign(static_cast<std::size_t>(frame_.ny), 0);
+  }
   for (std::size_t k = 0; k < holes_.size(); ++k) {
     const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
     Attachment at;
-    bool node_known = true;  // at.node is what node_at would say now
+    bool node_known = true;              // at.node is what node_at would say now
+    std::uint32_t indexed = UINT32_MAX;  // k, where the splice adds the bridge found for it
     if (!found_in_parallel) {
       at = find(hole, rank);
     } else {
       at = found_[k];
       if (stale || edges_split_ || at.hit.touching_edge != UINT32_MAX ||
-          (!at.touches && crossed_by_bridge(b_->pos[hole], at.hit))) {
+          (!at.touches && crossed_by_bridge(b_->pos[hole], at.hit, maybe_crossed_[k] != 0))) {
         at = find(hole, rank);
         ++redone_;
       } else {
         const Point& p = at.touches ? b_->pos[hole] : at.target;
         node_known = changed_cells_[frame_.cell_of(p)] == 0;
+        if (adds_bridge(at)) indexed = static_cast<std::uint32_t>(k);
       }
     }
     // Nothing to the left: the hole lies outside the outer ring. A target the splice could
     // not find (no merged node there: the search and the splice disagree) is found again
     // serially rather than trusted, and a hole is never spliced blindly.
-    bool joined = attach(hole, at, rank, node_known);
+    bool joined = attach(hole, at, rank, node_known, indexed);
     if (!joined && found_in_parallel) {
       ++redone_;
-      joined = attach(hole, find(hole, rank), rank, true);
+      joined = attach(hole, find(hole, rank), rank, true, UINT32_MAX);
     }
     if (!joined) {
       unjoined.push_back(hole);
@@ -173,34 +188,78 @@ HoleBridger::Attachment HoleBridger::find(std::uint32_t hole, std::uint32_t rank
   return at;
 }
 
-/// Whether a bridge (an added edge) crosses the ray from h where the serial search would meet
-/// it: at or right of the edge the search hit, in the cells that search reads.
-bool HoleBridger::crossed_by_bridge(const Point& h, const RayHit& hit) const {
-  if (edge_cells_.added.empty()) return false;
+/// Whether segment lo-hi crosses the leftward ray from h where a search that hit `hit` would
+/// meet it: at or right of the edge it hit, or exactly through h.
+bool HoleBridger::crosses_before_hit(const Point& h, const RayHit& hit, Point lo, Point hi) {
+  if (lo.y == hi.y) return false;  // horizontal: its endpoints end other edges
+  if (lo.y > hi.y) std::swap(lo, hi);
+  double x = 0;
+  const Crossing c = ray_crossing(h, lo, hi, x);
+  return c == Crossing::through || (c == Crossing::left && (hit.edge == UINT32_MAX || x >= hit.x));
+}
+
+/// Walks the cells the serial search from h reads (right to left, up to the edge it hit) until
+/// crosses_in_cell(cell) is true; returns whether it was.
+template <class Crosses>
+bool HoleBridger::any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const {
   const int row = frame_.row(h.y);
-  bool crossed = false;
-  for (int col = frame_.column(h.x); col >= 0 && !crossed; --col) {
+  for (int col = frame_.column(h.x); col >= 0; --col) {
     const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
     if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
-    edge_cells_.for_each_added(frame_.cell(col, row), [&](std::uint32_t id) {
-      const std::uint32_t s = edge_start_[id];
-      Point lo = b_->pos[s], hi = b_->pos[b_->next[s]];
-      if (crossed || lo.y == hi.y) return;
-      if (lo.y > hi.y) std::swap(lo, hi);
-      double x = 0;
-      const Crossing c = ray_crossing(h, lo, hi, x);
-      if (c == Crossing::through || (c == Crossing::left && (hit.edge == UINT32_MAX || x >= hit.x)))
-        crossed = true;
-    });
+    if (crosses_in_cell(frame_.cell(col, row))) return true;
   }
-  return crossed;
+  return false;
+}
+
+/// Visits (edge id, one end, other end) of the bridges spliced as found in `cell`.
+template <class Visit>
+void HoleBridger::for_each_indexed_bridge(std::size_t cell, Visit&& visit) const {
+  for (std::uint32_t i = bridge_cells_.start[cell]; i < bridge_cells_.start[cell + 1]; ++i) {
+    const std::uint32_t k = bridge_cells_.items[i];
+    if (bridge_edge_[k] != UINT32_MAX)
+      visit(bridge_edge_[k], found_[k].target, b_->pos[holes_[k].leftmost]);
+  }
+}
+
+/// Before any splice, in parallel: whether the bridge found for some hole ranked below hole k
+/// crosses k's ray where its search would meet it (so a splice may have to find k again).
+bool HoleBridger::any_found_bridge_crosses(std::uint32_t k) const {
+  const Point& h = b_->pos[holes_[k].leftmost];
+  const RayHit& hit = found_[k].hit;
+  return any_on_ray(h, hit, [&](std::size_t cell) {
+    for (std::uint32_t i = bridge_cells_.start[cell]; i < bridge_cells_.start[cell + 1]; ++i) {
+      const std::uint32_t j = bridge_cells_.items[i];
+      if (j < k && crosses_before_hit(h, hit, found_[j].target, b_->pos[holes_[j].leftmost]))
+        return true;
+    }
+    return false;
+  });
+}
+
+/// Whether a bridge (an added edge) crosses the ray from h where the serial search would meet
+/// it: at or right of the edge the search hit, in the cells that search reads. The bridges
+/// spliced as found only where `found_bridges` (maybe_crossed_ says none of them can).
+bool HoleBridger::crossed_by_bridge(const Point& h, const RayHit& hit, bool found_bridges) const {
+  if (!found_bridges && !rows_with_added_[static_cast<std::size_t>(frame_.row(h.y))]) return false;
+  return any_on_ray(h, hit, [&](std::size_t cell) {
+    bool crossed = false;
+    if (found_bridges)
+      for_each_indexed_bridge(cell, [&](std::uint32_t, const Point& a, const Point& c) {
+        crossed = crossed || crosses_before_hit(h, hit, a, c);
+      });
+    edge_cells_.for_each_added(cell, [&](std::uint32_t id) {
+      const std::uint32_t s = edge_start_[id];
+      crossed = crossed || crosses_before_hit(h, hit, b_->pos[s], b_->pos[b_->next[s]]);
+    });
+    return crossed;
+  });
 }
 
 /// Splices the hole where `at` says; false (nothing changed) if the ray hit nothing or no
 /// merged node is at the target. `node_known`: at.node is still what node_at would find (no
 /// splice since the search changed a node in its cell); else it is looked up again.
 bool HoleBridger::attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank,
-                         bool node_known) {
+                         bool node_known, std::uint32_t indexed) {
   const Point h = b_->pos[hole];
   if (!at.touches && at.hit.touching_edge != UINT32_MAX) {
     splice_into_edge(at.hit.touching_edge, hole);
@@ -214,8 +273,21 @@ bool HoleBridger::attach(std::uint32_t hole, const Attachment& at, std::uint32_t
   if (at.touches)
     splice_touching(target, hole);
   else
-    splice_bridge(target, hole);
+    splice_bridge(target, hole, indexed);
   return true;
+}
+
+/// Room for what the splices add (10,000 holes grew these arrays a few hundred times in the
+/// serial splice; the arrays indexed by id were reserved for most_ids() when first sized, so
+/// this copies nothing): new nodes and edges join at once (rank 0).
+void HoleBridger::reserve_for_splices() {
+  const std::size_t most = most_ids();
+  if (rank_.size() < most) rank_.resize(most, 0);
+  if (out_edge_.size() < most) out_edge_.resize(most, UINT32_MAX);
+  edge_start_.reserve(most);
+  node_cells_.added.reserve(2 * holes_.size());
+  edge_cells_.added.reserve(4 * holes_.size());
+  repeated_.reserve(4 * holes_.size());
 }
 
 /// A hole that could not be joined never counts for the holes after it.
@@ -224,19 +296,15 @@ void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
             rank_.begin() + polygon.ring_starts[ring + 1], UINT32_MAX);
 }
 
-/// A node a bridge adds (a copy): merged at once.
-void HoleBridger::insert_node(std::uint32_t node) {
-  const Point& p = b_->pos[node];
-  node_cells_.add(frame_.cell_of(p), node);
-  while (rank_.size() <= node) rank_.push_back(0);  // ids grow one at a time
+/// A node a bridge adds (a copy, in `cell`): merged at once.
+void HoleBridger::insert_node(std::size_t cell, std::uint32_t node) {
+  node_cells_.add(cell, node);
 }
 
 /// An edge a bridge adds, from `start`: a new id, merged at once (entered in no cell yet).
 std::uint32_t HoleBridger::new_edge(std::uint32_t start) {
   const auto id = static_cast<std::uint32_t>(edge_start_.size());
   edge_start_.push_back(start);
-  while (rank_.size() <= id) rank_.push_back(0);
-  if (out_edge_.size() <= start) out_edge_.resize(start + 1, UINT32_MAX);
   out_edge_[start] = id;
   return id;
 }
@@ -251,6 +319,11 @@ void HoleBridger::insert_edges(std::uint32_t start, std::uint32_t back) {
     edge_cells_.add(cell, first);
     if (second != UINT32_MAX) edge_cells_.add(cell, second);
   });
+  if (!rows_with_added_.empty()) {  // in parts: where crossed_by_bridge has lists to read
+    const auto [lo, hi] = std::minmax(b_->pos[start].y, b_->pos[b_->next[start]].y);
+    for (int row = frame_.row(lo); row <= frame_.row(hi); ++row)
+      rows_with_added_[static_cast<std::size_t>(row)] = 1;
+  }
 }
 
 /// The merged node at exactly p whose interior sector contains `towards`; UINT32_MAX if no
@@ -265,30 +338,38 @@ std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards, std::ui
   return inside != UINT32_MAX ? inside : any;
 }
 
+/// The nearest edge the leftward ray from h crosses (the largest crossing x, then the smallest
+/// id), and the smallest id of an edge through h: the same whatever order the cells list them.
 HoleBridger::RayHit HoleBridger::cast_left(const Point& h, std::uint32_t rank) const {
   RayHit hit;
   hit.x = -std::numeric_limits<double>::infinity();
+  const auto visit = [&](std::uint32_t id, Point lo, Point hi) {
+    if (lo.y == hi.y) return;  // horizontal: its endpoints end other edges
+    if (lo.y > hi.y) std::swap(lo, hi);
+    double x = 0;
+    const Crossing c = ray_crossing(h, lo, hi, x);
+    if (c == Crossing::through) hit.touching_edge = std::min(hit.touching_edge, id);
+    if (c == Crossing::left && (x > hit.x || (x == hit.x && id < hit.edge))) {
+      hit.x = x;
+      hit.edge = id;
+    }
+  };
   const int row = frame_.row(h.y);
   for (int col = frame_.column(h.x); col >= 0; --col) {
     const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
     if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
-    edge_cells_.for_each(frame_.cell(col, row), [&](std::uint32_t id) {
+    const std::size_t cell = frame_.cell(col, row);
+    edge_cells_.for_each(cell, [&](std::uint32_t id) {
       if (!merged(id, rank)) return;
       const std::uint32_t s = edge_start_[id];
-      Point lo = b_->pos[s], hi = b_->pos[b_->next[s]];
-      if (lo.y == hi.y) return;  // horizontal: its endpoints end other edges
-      if (lo.y > hi.y) std::swap(lo, hi);
-      double x = 0;
-      const Crossing c = ray_crossing(h, lo, hi, x);
-      if (c == Crossing::through) hit.touching_edge = id;
-      if (c == Crossing::left && (x > hit.x || (x == hit.x && id < hit.edge))) {
-        hit.x = std::min(x, h.x);
-        hit.edge = id;
-      }
+      visit(id, b_->pos[s], b_->pos[b_->next[s]]);
     });
+    if (PEAR_HAS_THREADS && bridges_indexed_) for_each_indexed_bridge(cell, visit);
   }
+  hit.x = std::min(hit.x, h.x);  // rounding may put a crossing a hair right of h
   return hit;
 }
+
 /// Eberly's method: an endpoint M of the hit edge, unless vertices lie in the triangle
 /// (h, crossing, M); then the one seen at the smallest angle from the ray (nearest on ties).
 /// Every decision is an exact orientation or comparison; the crossing x only bounds the search.
@@ -330,35 +411,42 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32
 
 /// A splice turned node's sector or put a copy at its position: what the search found in its
 /// cell is looked up again.
-void HoleBridger::mark_changed(std::uint32_t node) {
+void HoleBridger::mark_changed(std::size_t cell) {
   // A serial join: each hole is found right before its splice.
   if (!PEAR_HAS_THREADS || changed_cells_.empty()) return;
-  const Point& p = b_->pos[node];
-  changed_cells_[frame_.cell_of(p)] = 1;
+  changed_cells_[cell] = 1;
 }
 
-void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole) {
+/// `indexed_hole`: the hole whose bridge as found this is (bridge_cells_ lists it), or none.
+void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
+                                std::uint32_t indexed_hole) {
   Boundary& b = *b_;
-  mark_changed(target);
-  mark_changed(hole);
+  const std::size_t target_cell = frame_.cell_of(b.pos[target]);
+  const std::size_t hole_cell = frame_.cell_of(b.pos[hole]);
+  mark_changed(target_cell);
+  mark_changed(hole_cell);
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
   repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
-  out_edge_.resize(b.size(), UINT32_MAX);
   const std::uint32_t old_edge = out_edge_[target];
   edge_start_[old_edge] = target_copy;
   out_edge_[target_copy] = old_edge;
   out_edge_[target] = UINT32_MAX;
-  insert_edges(target, hole_copy);
-  insert_node(target_copy);
-  insert_node(hole_copy);
+  if (!PEAR_HAS_THREADS || indexed_hole == UINT32_MAX) {
+    insert_edges(target, hole_copy);
+  } else {  // the same ids as insert_edges gives, the cells already listed
+    bridge_edge_[indexed_hole] = new_edge(target);
+    new_edge(hole_copy);
+  }
+  insert_node(target_cell, target_copy);
+  insert_node(hole_cell, hole_copy);
 }
 
 /// The hole shares a point with the merged boundary: link the rings there, no bridge needed.
 void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
-  mark_changed(target);
-  mark_changed(hole);
+  mark_changed(frame_.cell_of(b.pos[target]));
+  mark_changed(frame_.cell_of(b.pos[hole]));
   const std::uint32_t after_target = b.next[target], after_hole = b.next[hole];
   repeated_.insert(repeated_.end(), {target, hole});
   b.link(target, after_hole);
@@ -374,19 +462,18 @@ void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
 void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
-  for (const std::uint32_t node : {start, end, hole}) mark_changed(node);
+  for (const std::uint32_t node : {start, end, hole}) mark_changed(frame_.cell_of(b.pos[node]));
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
   repeated_.insert(repeated_.end(), {hole, entry});
   b.link(start, entry);
   b.link(entry, b.next[hole]);
   b.link(before_hole, hole);
   b.link(hole, end);
-  out_edge_.resize(b.size(), UINT32_MAX);
   // The edge from `hole` keeps its id but now leaves the copy; `hole` leaves towards `end`.
   const std::uint32_t hole_edge = out_edge_[hole];
   if (hole_edge != UINT32_MAX) edge_start_[hole_edge] = entry, out_edge_[entry] = hole_edge;
   out_edge_[hole] = UINT32_MAX;
-  insert_node(entry);
+  insert_node(frame_.cell_of(b.pos[entry]), entry);
   insert_edges(hole, UINT32_MAX);
   edges_split_ = true;  // edge `edge` is shorter now: what the parallel search saw of it is stale
 }

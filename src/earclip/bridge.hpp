@@ -2,6 +2,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -21,11 +22,12 @@ namespace pear::detail {
 /// (outer ring 0, the k-th hole in order k), so a hole of rank k sees exactly the rings ranked
 /// below it, and the few nodes and edges that bridges add go to per-cell lists beside them.
 ///
-/// In parallel (docs/parallel.md, "Bridges"): every hole's ray and visible vertex are found at
-/// once, as tasks, against the rings ranked below it; then, in order, each hole is spliced,
-/// after a check that no bridge added before it crosses its ray nearer than what it hit (the
-/// only way the serial result could differ; then it is found again). The triangles are the
-/// same as the serial joining's, whatever the threads or parts.
+/// In parallel (docs/parallel.md, "Bridges in parts"): every hole's ray and visible vertex are
+/// found at once, as tasks, against the rings ranked below it, and so is whether a bridge found
+/// for a hole before it may cross its ray; then, in order, each hole is spliced, after a check
+/// that no bridge added before it crosses its ray nearer than what it hit (the only way the
+/// serial result could differ; then it is found again). The triangles are the same as the
+/// serial joining's, whatever the threads or parts.
 class HoleBridger {
  public:
   /// Up to this many holes the grid is one cell: each hole scans every edge and node.
@@ -110,34 +112,69 @@ class HoleBridger {
     std::vector<std::uint32_t> in_band;
   };
 
+  using PhaseNames = std::array<const char*, 3>;
+  CellLists& cell_lists(std::size_t list) {
+    return list == 0 ? node_cells_ : list == 1 ? edge_cells_ : bridge_cells_;
+  }
+  /// Whether the attachment joins the hole by a bridge from a ray's hit (the search's usual
+  /// outcome), not at a shared point or inside an edge.
+  static bool adds_bridge(const Attachment& at) {
+    return !at.touches && at.hit.touching_edge == UINT32_MAX && at.hit.edge != UINT32_MAX;
+  }
   void order_holes(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void build_grid(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void fill_cells(std::uint32_t nodes);
   void build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx);
-  void sort_band(CellLists& lists, std::size_t list, std::size_t band, std::size_t per_band);
+  template <class Cells>
+  void fill_lists_in_parts(std::size_t first_list, std::size_t count, std::uint32_t items,
+                           std::size_t tasks, const RunContext& ctx, const PhaseNames& phases,
+                           Cells&& cells);
+  void sort_band(std::size_t list, std::size_t band, std::size_t per_band);
+  void index_found_bridges(const RunContext& ctx);
   void assign_ranks(const CleanPolygon& polygon, std::size_t from, std::size_t to);
   void find_all(const RunContext& ctx);
   void splice_all(const CleanPolygon& polygon, bool found_in_parallel,
                   std::vector<std::uint32_t>& unjoined);
   bool merged(std::uint32_t item, std::uint32_t rank) const { return rank_[item] < rank; }
   Attachment find(std::uint32_t hole, std::uint32_t rank) const;
-  bool crossed_by_bridge(const Point& h, const RayHit& hit) const;
-  bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known);
-  void mark_changed(std::uint32_t node);
+  static bool crosses_before_hit(const Point& h, const RayHit& hit, Point lo, Point hi);
+  template <class Crosses>
+  bool any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const;
+  bool any_found_bridge_crosses(std::uint32_t k) const;
+  bool crossed_by_bridge(const Point& h, const RayHit& hit, bool found_bridges) const;
+  template <class Visit>
+  void for_each_indexed_bridge(std::size_t cell, Visit&& visit) const;
+  bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known,
+              std::uint32_t indexed);
+  void mark_changed(std::size_t cell);
+  /// The most node or edge ids a join can end with: a bridge adds two nodes and two edges, a
+  /// hole joined inside an edge one of each.
+  std::size_t most_ids() const { return b_->size() + 2 * holes_.size(); }
+  void reserve_for_splices();
   void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
-  void insert_node(std::uint32_t node);
+  void insert_node(std::size_t cell, std::uint32_t node);
   std::uint32_t new_edge(std::uint32_t start);
   void insert_edges(std::uint32_t start, std::uint32_t back);
   std::uint32_t node_at(const Point& p, const Point& towards, std::uint32_t rank) const;
   RayHit cast_left(const Point& h, std::uint32_t rank) const;
   Point visible_target(const Point& h, const RayHit& hit, std::uint32_t rank) const;
-  void splice_bridge(std::uint32_t target, std::uint32_t hole);
+  void splice_bridge(std::uint32_t target, std::uint32_t hole,
+                     std::uint32_t indexed_hole = UINT32_MAX);
   void splice_touching(std::uint32_t target, std::uint32_t hole);
   void splice_into_edge(std::uint32_t edge, std::uint32_t hole);
 
   Boundary* b_ = nullptr;
   GridFrame frame_;
   CellLists node_cells_, edge_cells_;
+  /// In parts (index_found_bridges): the cells of every hole's bridge as found (items: hole
+  /// numbers in holes_). A bridge spliced as found is entered only here (its edges' ids in
+  /// bridge_edge_), so edge_cells_' added lists hold only the edges of holes found again.
+  CellLists bridge_cells_;
+  bool bridges_indexed_ = false;
+  /// Per hole spliced as found: its bridge's first edge (the second is the next id).
+  std::vector<std::uint32_t> bridge_edge_;
+  /// Per hole: whether a bridge found for a hole before it may cross its ray.
+  std::vector<std::uint8_t> maybe_crossed_;
   /// Node or edge id -> the rank of its ring (a ring joins when the hole ranked next is
   /// searched), 0 for what bridges add, never (UINT32_MAX) for a hole that could not be joined.
   std::vector<std::uint32_t> rank_;
@@ -147,12 +184,15 @@ class HoleBridger {
   std::vector<Attachment> found_;         ///< the parallel search's result per hole
   std::vector<CellPair> pairs_;           ///< {cell, item}: build_grid
   std::vector<GridChunk> grid_chunks_;    ///< in parts: the nodes' chunks, then the edges'
-  /// In parts, per list (nodes, edges): its pairs by band, and where each band starts.
-  FillVector<CellPair> by_band_[2];
-  std::vector<std::uint32_t> band_start_[2];
+  /// In parts, per list (nodes, edges, found bridges): its pairs by band, and where each band
+  /// starts.
+  FillVector<CellPair> by_band_[3];
+  std::vector<std::uint32_t> band_start_[3];
   /// In the parallel splice: the node cells where a splice added a node or turned a node's
   /// sector (a node found there by the search must be looked up again).
   std::vector<std::uint8_t> changed_cells_;
+  /// In the parallel splice: the grid's rows whose cells list added edges.
+  std::vector<std::uint8_t> rows_with_added_;
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   std::size_t redone_ = 0;
   std::vector<std::uint32_t> repeated_;
