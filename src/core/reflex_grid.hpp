@@ -93,6 +93,27 @@ class ReflexGrid {
     if (cell_end_[cell] == cell_start_[cell]) occupied_.clear(cell);
   }
 
+  /// Calls visit(entry) for every node in the grid (the built ones and the added) within the
+  /// box [lo, hi].
+  template <class Visit>
+  void for_each_in_box(const Point& lo, const Point& hi, Visit&& visit) const {
+    const auto inside = [&](const Point& p) {
+      return p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y;
+    };
+    if (live_ == 0) return;
+    if (hi.x >= lo_.x && lo.x <= hi_.x && hi.y >= lo_.y && lo.y <= hi_.y) {
+      const int c0 = frame_.column(lo.x), c1 = frame_.column(hi.x);
+      for (int r = frame_.row(lo.y); r <= frame_.row(hi.y); ++r)
+        for (int c = c0; c <= c1; ++c) {
+          const std::size_t cell = frame_.cell(c, r);
+          for (std::uint32_t i = cell_start_[cell]; i < cell_end_[cell]; ++i)
+            if (inside(items_[i].pos)) visit(items_[i]);
+        }
+    }
+    for (const Entry& e : extra_)
+      if (inside(e.pos)) visit(e);
+  }
+
   /// Calls visit(entry) for every node in a cell that triangle (a, b, c) may touch, until visit
   /// returns true; returns whether it did. Per row, only the columns the triangle spans within
   /// the row's band (plus one on each side for rounding), and only cells that hold nodes; none

@@ -25,6 +25,7 @@ class ChainClipper {
   };
   bool own(std::uint32_t v) const { return s_->owner[v] == chain_; }
   bool is_ear(std::uint32_t v) const;
+  void build_grid(std::size_t first, std::size_t last);
   void offer(std::uint32_t v);
   bool clippable(std::uint32_t v) const;
   /// After v lost a neighbour: it may have stopped being strictly reflex.
@@ -39,7 +40,7 @@ class ChainClipper {
   EarHeuristic heuristic_ = EarHeuristic::top;
   EarQueue queue_;
   std::uint32_t first_node_ = 0;  ///< the lowest node number of the chain (queue blocks)
-  ReflexGrid own_grid_;           ///< this chain's hashed nodes, kept up to date
+  ReflexGrid own_grid_;           ///< see build_grid
   std::vector<std::uint32_t> scratch_;
 };
 

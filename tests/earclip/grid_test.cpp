@@ -103,7 +103,8 @@ TEST_P(GridQuery, FindsEveryPointOfRandomSlivers) {
 /// ReflexGrid as the clippers use it: nodes leave one by one (in random order, some added late
 /// as a split's copies do), and after every change a query over a triangle finds exactly the
 /// nodes still in the grid inside it, down to none left and back to one added after that (the
-/// query skips an empty grid: its count must follow every add and remove).
+/// query skips an empty grid: its count must follow every add and remove); and a query over a
+/// box (the chains' gathering of other chains' nodes) the nodes still in the grid within it.
 TEST(ReflexGridQuery, FindsTheNodesStillInTheGridAsTheyLeave) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> coordinate(0.0, 100.0);
@@ -131,6 +132,21 @@ TEST(ReflexGridQuery, FindsTheNodesStillInTheGridAsTheyLeave) {
         });
         ASSERT_EQ(found, expected)
             << when << ", round " << round << ", " << in_grid.size() << " nodes in the grid";
+      }
+      // Boxes (some past the grid's edges, some a single point at a node): exactly the nodes
+      // still in the grid within them.
+      for (int q = 0; q < 8; ++q) {
+        Point lo{coordinate(rng) - 20, coordinate(rng) - 20}, hi{coordinate(rng), coordinate(rng)};
+        if (q == 0 && !in_grid.empty()) lo = hi = b.pos[in_grid[rng() % in_grid.size()]];
+        std::set<std::uint32_t> expected, found;
+        for (std::uint32_t v : in_grid) {
+          const Point& p = b.pos[v];
+          if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) expected.insert(v);
+        }
+        grid.for_each_in_box(lo, hi, [&](const ReflexGrid::Entry& e) {
+          EXPECT_TRUE(found.insert(e.node).second) << "visited twice";
+        });
+        ASSERT_EQ(found, expected) << when << ", box " << q;
       }
       // The whole square: every node still in the grid, and no other.
       std::set<std::uint32_t> all;
