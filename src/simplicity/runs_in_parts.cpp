@@ -205,7 +205,7 @@ void SimplicityCheck::finish_runs_in_parts(const RunContext& ctx, std::size_t ta
 /// runs was Eurasia's longest task of the check at 16 threads).
 void SimplicityCheck::sort_runs_in_parts(const RunContext& ctx, std::size_t tasks) {
   sort_in_parts(ctx, "check simplicity: sort runs", "check simplicity: merge runs", chains_,
-                chain_before, 1024, std::bit_ceil(tasks));
+                chain_before, 256, std::bit_ceil(tasks));
 }
 
 }  // namespace pear::detail

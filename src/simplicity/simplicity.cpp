@@ -253,11 +253,11 @@ bool runs_worth_trying(std::size_t runs, std::size_t n) {
   return runs * 3 <= n && (runs <= 16 || runs * 64 >= n);
 }
 
-/// Tasks for the runs' preparation: in parts from 32,768 edges where the run is parallel or
+/// Tasks for the runs' preparation: in parts from 8,192 edges where the run is parallel or
 /// partitioned (the same runs either way), a few a partition so that stealing evens them out.
 std::size_t runs_preparation_tasks(std::size_t n, const RunContext& ctx) {
   if (!PEAR_HAS_THREADS || !(ctx.parallel() || ctx.partitions > 1)) return 1;
-  return std::clamp<std::size_t>(n / 16384, 1, 4 * std::max<std::size_t>(ctx.partitions, 2));
+  return std::clamp<std::size_t>(n / 4096, 1, 4 * std::max<std::size_t>(ctx.partitions, 2));
 }
 
 /// The few-edges strategies' shared set-up, sequentially: each edge's successor, its box handed
@@ -517,7 +517,7 @@ void SimplicityCheck::count_run_pairs(const RunContext& ctx) {
         std::partition_point(first, last, [end](const Chain& c) { return c.x0 <= end; });
     return static_cast<std::size_t>(after - chains_.begin()) - i - 1;
   };
-  const std::size_t tasks = std::clamp<std::size_t>(runs / 4096, 1, 4 * ctx.partitions);
+  const std::size_t tasks = std::clamp<std::size_t>(runs / 1024, 1, 4 * ctx.partitions);
   ctx.run_tasks("check simplicity: pair counts", tasks, [&](std::size_t t) {
     for (std::size_t i = runs * t / tasks; i < runs * (t + 1) / tasks; ++i)
       pairs_before_[i + 1] = pairs_of(i);
@@ -586,7 +586,7 @@ std::optional<Verdict> SimplicityCheck::check_chains(const CleanPolygon& polygon
   const bool in_parts = PEAR_HAS_THREADS && ctx.partitions > 1;
   if (in_parts) count_run_pairs(ctx);
   const std::size_t pairs = in_parts ? pairs_before_.back() : 0;
-  const std::size_t tasks = std::clamp<std::size_t>(pairs / 4096, 1, 16 * ctx.partitions);
+  const std::size_t tasks = std::clamp<std::size_t>(pairs / 1024, 1, 16 * ctx.partitions);
   std::vector<RunWalk> walks(tasks);
   std::atomic<std::size_t> spent{0};
   ctx.run_tasks("check simplicity: run pairs", tasks, [&](std::size_t t) {
