@@ -69,8 +69,7 @@ class SteinerRepair {
   /// replaced by a -> b. In tasks of ctx (phases "check Steiner holes: ..."); the same verdict
   /// for any partitions.
   bool check_chain(const Boundary& b, const std::vector<SplitLine>& lines,
-                   const std::vector<std::vector<SteinerTriangle>>& fills,
-                   const RunContext& ctx) const;
+                   const std::vector<std::vector<SteinerTriangle>>& fills, const RunContext& ctx);
 
   /// What makes two corners the same point: an input node by its position, a Steiner point by
   /// its line and the ends of its input edge (so both sides of a bridge give one point).
@@ -105,7 +104,9 @@ class SteinerRepair {
   std::uint32_t next_on_boundary(std::uint32_t edge) const;
   bool walk_hole(std::uint32_t start, std::vector<std::uint8_t>& visited);
   bool holes_are_disks(const std::vector<std::uint32_t>& hole_starts) const;
-  void add_split_edges(const Boundary& b, const std::vector<SplitLine>& lines,
+  void sort_steiner_points(const Boundary& b, const std::vector<SplitLine>& lines,
+                           const RunContext& ctx);
+  void add_split_edges(const std::vector<SplitLine>& lines, std::size_t from, std::size_t to,
                        std::vector<ChainUse>& uses) const;
 
   // canonical_corners' arrays, kept between runs (their pages were a third of its time).
@@ -113,6 +114,7 @@ class SteinerRepair {
   std::vector<std::pair<CornerKey, PieceCorner>> keyed_;
   std::vector<std::pair<PieceCorner, PieceCorner>> canonical_;  ///< sorted by corner
   std::vector<SteinerTriangle> triangles_;                      ///< in canonical corners
+  std::vector<PieceCorner> steiner_;  ///< every Steiner point, by input edge and along it
   std::vector<std::uint8_t> on_boundary_;
   std::vector<DirectedEdge> edges_;    ///< sorted by (from, to)
   std::vector<std::uint32_t> across_;  ///< glued() of each edge (triangle * 3 + corner)

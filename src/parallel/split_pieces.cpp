@@ -45,10 +45,11 @@ void append_piece(const PieceCorner* corners, std::uint32_t count, Pieces& out) 
 /// sort of Borneo's sample was most of dividing it in two); past it, sorted.
 constexpr std::size_t few_lines = 16;
 
-/// Quantiles of the sample: the ceil(i * n / parts)-th smallest x, without repeats. Reorders
-/// xs unless `sorted` says it is: for a few lines each rank is selected above the last
-/// (nth_element), else xs is sorted.
-std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts, bool sorted) {
+/// Quantiles of the sample: the ceil(i * n / (parts - 1 + last_share))-th smallest x, without
+/// repeats (the last part a `last_share` of the others'). Reorders xs unless `sorted` says it
+/// is: for a few lines each rank is selected above the last (nth_element), else xs is sorted.
+std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts, bool sorted,
+                                       double last_share) {
   std::vector<double> after;
   if (xs.empty()) return after;
   const bool select = !sorted && parts - 1 <= few_lines;
@@ -56,7 +57,9 @@ std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts, 
   const double largest = sorted ? xs.back() : *std::max_element(xs.begin(), xs.end());
   std::size_t selected = 0;  // xs[0, selected) hold the smallest values, in no order
   for (std::size_t i = 1; i < parts; ++i) {
-    const std::size_t m = (i * xs.size() + parts - 1) / parts;  // paper: m_i = ceil(i n / k)
+    // The paper's m_i = ceil(i n / k) where last_share is 1.
+    const auto m = static_cast<std::size_t>(
+        std::ceil(static_cast<double>(i * xs.size()) / (parts - 1 + last_share)));
     if (select && m > selected) {
       std::nth_element(xs.begin() + static_cast<std::ptrdiff_t>(selected),
                        xs.begin() + static_cast<std::ptrdiff_t>(m - 1), xs.end());
@@ -72,48 +75,40 @@ std::vector<double> quantile_positions(std::vector<double>& xs, unsigned parts, 
 struct CycleSample {
   std::vector<double> xs, low, high;
   std::size_t stride = 1;
-  bool ranges_sorted = false;
 };
 
 /// The crossings of the sample's edges with lines placed right after each x of `after`
 /// (increasing), times the stride: an edge crosses such a line when its x range holds the x and
-/// reaches past it. Up to few_lines lines counted in `tasks` tasks of ctx.
-std::size_t estimated_crossings(CycleSample& sample, const std::vector<double>& after,
+/// reaches past it. Counted in `tasks` tasks of ctx: up to few_lines lines line by line, past
+/// that by two binary searches an edge (a serial sort of the ranges was 1.5 ms of
+/// random-holes-100k at 32 parts, its longest phase).
+std::size_t estimated_crossings(const CycleSample& sample, const std::vector<double>& after,
                                 std::size_t tasks, const RunContext& ctx) {
   const std::vector<double>&low = sample.low, &high = sample.high;
-  if (after.size() <= few_lines) {
-    std::vector<std::size_t> counts(tasks, 0);
-    ctx.run_tasks_if_threads("split lines: crossings", tasks, [&](std::size_t t) {
-      std::size_t crossings = 0;
-      const std::size_t end = low.size() * (t + 1) / tasks;
-      for (std::size_t e = low.size() * t / tasks; e < end; ++e)
+  std::vector<std::size_t> counts(tasks, 0);
+  ctx.run_tasks_if_threads("split lines: crossings", tasks, [&](std::size_t t) {
+    std::size_t crossings = 0;
+    const std::size_t end = low.size() * (t + 1) / tasks;
+    for (std::size_t e = low.size() * t / tasks; e < end; ++e) {
+      if (after.size() <= few_lines) {
         for (double v : after)  // bitwise, without a branch (clang warns of & on bools)
           crossings +=
               static_cast<std::size_t>(low[e] <= v) & static_cast<std::size_t>(v < high[e]);
-      counts[t] = crossings;
-    });
-    return std::accumulate(counts.begin(), counts.end(), std::size_t{0}) * sample.stride;
-  }
-  std::size_t crossings = 0;
-  ctx.run_serial_if_threads("split lines: crossings", [&] {
-    if (!sample.ranges_sorted) {
-      detail::sort(sample.low.begin(), sample.low.end());
-      detail::sort(sample.high.begin(), sample.high.end());
-      sample.ranges_sorted = true;
+      } else {  // the lines at or right of low[e] and left of high[e]
+        crossings +=
+            static_cast<std::size_t>(std::lower_bound(after.begin(), after.end(), high[e]) -
+                                     std::lower_bound(after.begin(), after.end(), low[e]));
+      }
     }
-    // Edges starting at or before v, less those ending there too.
-    for (double v : after)
-      crossings +=
-          static_cast<std::size_t>((std::upper_bound(low.begin(), low.end(), v) - low.begin()) -
-                                   (std::upper_bound(high.begin(), high.end(), v) - high.begin()));
+    counts[t] = crossings;
   });
-  return crossings * sample.stride;
+  return std::accumulate(counts.begin(), counts.end(), std::size_t{0}) * sample.stride;
 }
 
 }  // namespace
 
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
-                                    unsigned parts, const RunContext& ctx) {
+                                    unsigned parts, const RunContext& ctx, double last_share) {
   // Quantiles of a sample of at most 2^14 x values: balanced enough, and O(n) to take.
   constexpr std::size_t sample_limit = std::size_t{1} << 14;
   CycleSample sample;
@@ -144,8 +139,9 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
   const std::size_t budget = max_steiner_points(cycle.size());
   for (; parts >= 2; parts /= 2) {
     std::vector<double> after;
-    ctx.run_serial_if_threads("split lines: quantiles",
-                              [&] { after = quantile_positions(sample.xs, parts, sorted); });
+    ctx.run_serial_if_threads("split lines: quantiles", [&] {
+      after = quantile_positions(sample.xs, parts, sorted, last_share);
+    });
     if (estimated_crossings(sample, after, tasks, ctx) <= budget) return after;
   }
   return {};

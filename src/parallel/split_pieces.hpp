@@ -72,8 +72,9 @@ inline std::size_t max_steiner_points(std::size_t nodes) {
 /// than max_steiner_points (estimated from the sample), parts is halved until they do not:
 /// the cost stays within a small multiple of clipping the whole boundary. The sample and the
 /// count in tasks of ctx (phases "split lines: ..."); the same lines for any threads.
+/// `last_share`: the rightmost part's share of vertices against the others' (1: equal parts).
 std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
-                                    unsigned parts, const RunContext& ctx);
+                                    unsigned parts, const RunContext& ctx, double last_share = 1);
 
 /// Splits pieces along one line; keeps its scratch memory between calls.
 class PieceSplitter {

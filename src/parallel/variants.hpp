@@ -56,6 +56,7 @@ using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>
 [[gnu::noinline]] bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                                           MakeClipper make_clipper, const RunContext& ctx,
                                           TriangleList& out, std::uint32_t& best_effort_vertex,
-                                          std::size_t& region_ordered, VariantScratchPtr& scratch);
+                                          std::size_t& region_ordered, VariantScratchPtr& scratch,
+                                          bool many_holes = false);
 
 }  // namespace pear::detail

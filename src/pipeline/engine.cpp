@@ -347,8 +347,10 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   switch (algorithm) {
     case Algorithm::divide_and_conquer:
       // Part after part, each a slab: runs of this order are the CDT's flip sets.
+      // A hole every 64 nodes or more: the holes' bridges make the rightmost part one piece.
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
-                                best_effort_vertex, region_ordered_, variant_scratch_);
+                                best_effort_vertex, region_ordered_, variant_scratch_,
+                                (clean_.ring_count() - 1) * 64 >= boundary_.size());
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
                                shared_);
