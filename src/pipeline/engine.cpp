@@ -37,8 +37,9 @@ class Outline {
   bool corridors() { return long_runs() && runs() > 16; }
   /// At most 16 long runs: a comb (2 runs), an outline convex or nearly so.
   bool few_long_runs() { return long_runs() && runs() <= 16; }
-  /// A hole for every 16 nodes or fewer, not coast-like: grids of holes (runs of 2 edges).
-  bool hole_grid() { return (clean_.ring_count() - 1) * 16 >= nodes() && !coast_like(); }
+  /// A hole for every 16 nodes or fewer: grids of holes (runs of 2 edges), random polygons
+  /// with holes (runs of 4: coast-like).
+  bool many_holes() const { return (clean_.ring_count() - 1) * 16 >= nodes(); }
 
  private:
   /// Runs of over 64 edges on average.
@@ -106,7 +107,7 @@ Choice resolve(Algorithm requested, std::size_t nodes, std::uint32_t partitions,
   if (outline.few_long_runs()) return {Algorithm::mark_and_cut, partitions};
   if (partitions == 2 || outline.corridors()) return {Algorithm::divide_and_conquer, dc_parts};
   if (partitions <= 4 && dc_parts > partitions) return {Algorithm::divide_and_conquer, dc_parts};
-  if (outline.hole_grid()) return {Algorithm::divide_and_conquer, dc_parts};
+  if (outline.many_holes()) return {Algorithm::divide_and_conquer, dc_parts};
   return {Algorithm::partition_and_cut, partitions};
 }
 

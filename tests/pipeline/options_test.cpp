@@ -85,10 +85,10 @@ TEST(Options, AutomaticDependsOnPartitionsNotThreads) {
 }
 
 // Past two partitions automatic takes divide-and-conquer along corridors (more than 16 runs of
-// edges monotone in x, over 64 edges a run: a spiral's walls) and on grids of holes (a hole
-// every 16 nodes or more often, runs too short to be coast-like), mark-and-cut on a few long
-// runs (a comb: 2 runs), and partition-and-cut elsewhere (the star: runs of 1.5 edges; random
-// polygons with holes, coast-like: runs of 4 edges).
+// edges monotone in x, over 64 edges a run: a spiral's walls) and where holes are many (a hole
+// every 16 nodes or more often: grids of holes, random polygons with holes), mark-and-cut on a
+// few long runs (a comb: 2 runs), and partition-and-cut elsewhere (the star: runs of 1.5
+// edges).
 TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
   struct Case {
     const char* kind;
@@ -99,7 +99,7 @@ TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
         Case{"comb", Algorithm::mark_and_cut, Algorithm::partition_and_cut},
         Case{"star", Algorithm::partition_and_cut, Algorithm::divide_and_conquer},
         Case{"holes", Algorithm::divide_and_conquer, Algorithm::partition_and_cut},
-        Case{"random-holes", Algorithm::partition_and_cut, Algorithm::divide_and_conquer}}) {
+        Case{"random-holes", Algorithm::divide_and_conquer, Algorithm::partition_and_cut}}) {
     SCOPED_TRACE(c.kind);
     const Polygon polygon = generate_polygon(c.kind, 60000, 3);
     for (unsigned partitions : {4u, 8u}) {
@@ -118,7 +118,9 @@ TEST(Options, AutomaticTakesDivideAndConquerAlongCorridors) {
 // On large coast-like outlines (runs of 3 to 64 edges: random polygons with holes have 4)
 // automatic cuts divide-and-conquer into more parts than partitions, up to four partitions:
 // twice as many from 100,000 nodes, four times from 300,000, and from 300,000 also on one
-// partition (8 parts). Below 100,000 nodes, or past four partitions, as before.
+// partition (8 parts). Below 100,000 nodes the partitions. Past four partitions such outlines
+// get partition-and-cut, but these, with a hole every 8 vertices, divide-and-conquer in the same
+// parts.
 TEST(Options, AutomaticCutsLargeCoastLikeOutlinesIntoMoreParts) {
   const auto same = [](const Polygon& polygon, unsigned partitions, Algorithm algorithm,
                        unsigned parts) {
@@ -134,13 +136,23 @@ TEST(Options, AutomaticCutsLargeCoastLikeOutlinesIntoMoreParts) {
   EXPECT_TRUE(same(large, 2, Algorithm::divide_and_conquer, 4));
   EXPECT_FALSE(same(large, 2, Algorithm::divide_and_conquer, 2));
   EXPECT_TRUE(same(large, 3, Algorithm::divide_and_conquer, 6));
-  EXPECT_TRUE(same(large, 8, Algorithm::partition_and_cut, 8));
+  EXPECT_TRUE(same(large, 8, Algorithm::divide_and_conquer, 16));
   const Polygon huge = generate_polygon("random-holes", 310000, 3);
   EXPECT_TRUE(same(huge, 1, Algorithm::divide_and_conquer, 8));
   EXPECT_TRUE(same(huge, 4, Algorithm::divide_and_conquer, 16));
   const Polygon smaller = generate_polygon("random-holes", 60000, 3);
   EXPECT_TRUE(same(smaller, 2, Algorithm::divide_and_conquer, 2));
-  EXPECT_TRUE(same(smaller, 4, Algorithm::partition_and_cut, 4));
+  EXPECT_TRUE(same(smaller, 4, Algorithm::divide_and_conquer, 4));
+  // A coast-like outline without holes (a circle rippled every 12 vertices: runs of about 6
+  // edges monotone in x) past four partitions: partition-and-cut.
+  Ring rippled;
+  for (int i = 0; i < 120000; ++i) {
+    const double r = 1000 + 0.2 * std::sin(2 * M_PI * (i % 12) / 12.0);
+    const double angle = 2 * M_PI * i / 120000;
+    rippled.push_back({r * std::cos(angle), r * std::sin(angle)});
+  }
+  EXPECT_TRUE(same(Polygon{rippled}, 8, Algorithm::partition_and_cut, 8));
+  EXPECT_TRUE(same(Polygon{rippled}, 4, Algorithm::divide_and_conquer, 8));
 }
 
 // Few long runs monotone in x (a comb: 2; an outline convex or nearly so): mark-and-cut at any
