@@ -89,9 +89,10 @@ void HoleBridger::fill_lists_in_parts(std::size_t first_list, std::size_t count,
       chunk.pairs.push_back({static_cast<std::uint32_t>(cell), item});
       ++chunk.in_band[cell / per_band];
     };
-    const std::size_t chunk_of_ids = t % tasks;
-    for (std::uint32_t v = first(chunk_of_ids); v < first(chunk_of_ids + 1); ++v)
-      cells(first_list + t / tasks, v, [&](std::size_t cell) { list(cell, v); });
+    const std::size_t chunk_of_ids = t % tasks, of_list = first_list + t / tasks;
+    const std::uint32_t end = first(chunk_of_ids + 1);
+    for (std::uint32_t v = first(chunk_of_ids); v < end; ++v)
+      cells(of_list, v, [&](std::size_t cell) { list(cell, v); });
   });
   // Where each chunk's pairs of each band go: bands in order, within a band chunks in order.
   for (std::size_t l = 0; l < count; ++l) {

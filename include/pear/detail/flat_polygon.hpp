@@ -39,6 +39,11 @@ std::size_t vertex_count(const Rings& rings) {
 template <ring_range Rings>
 bool flatten(const Rings& rings, FlatPolygon& flat) {
   flat.clear();
+  // Sized rings are counted first, so a first call on a large polygon grows its arrays once.
+  if constexpr (std::ranges::sized_range<std::ranges::range_reference_t<const Rings>>) {
+    const std::size_t count = vertex_count(rings);
+    if (count < std::numeric_limits<std::uint32_t>::max()) flat.points.reserve(count);
+  }
   std::size_t total = 0;
   for (const auto& ring : rings) {
     flat.ring_starts.push_back(static_cast<std::uint32_t>(total));
