@@ -203,11 +203,17 @@ bool HoleBridger::crosses_before_hit(const Point& h, const RayHit& hit, Point lo
 template <class Crosses>
 bool HoleBridger::any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const {
   const int row = frame_.row(h.y);
-  for (int col = frame_.column(h.x); col >= 0; --col) {
-    const double cell_right = frame_.inv_w > 0 ? frame_.x0 + (col + 2) / frame_.inv_w : h.x;
-    if (hit.edge != UINT32_MAX && cell_right < hit.x) break;
-    if (crosses_in_cell(frame_.cell(col, row))) return true;
+  // The columns whose right edge, one column out, reaches the hit (cast_left's walk), the
+  // last of them found once rather than with a division a column.
+  int last = 0;
+  if (hit.edge != UINT32_MAX && frame_.inv_w > 0) {
+    const auto short_of_hit = [&](int col) { return frame_.x0 + (col + 2) / frame_.inv_w < hit.x; };
+    last = std::max(0, frame_.column(hit.x) - 3);
+    while (last > 0 && !short_of_hit(last - 1)) --last;
+    while (last <= frame_.nx && short_of_hit(last)) ++last;
   }
+  for (int col = frame_.column(h.x); col >= last; --col)
+    if (crosses_in_cell(frame_.cell(col, row))) return true;
   return false;
 }
 
