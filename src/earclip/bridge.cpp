@@ -38,7 +38,6 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   bridges_indexed_ = false;
   repeated_.clear();
   changed_cells_.clear();
-  rows_with_added_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
   // Without threads the joining in parts would give the same boundary at more cost (and
@@ -135,10 +134,7 @@ void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel
   bool stale = false;  // found_ was computed with a ring that is now left out
   found_in_parallel = PEAR_HAS_THREADS && found_in_parallel;  // the .wasm keeps no such path
   reserve_for_splices();
-  if (found_in_parallel) {
-    changed_cells_.assign(node_cells_.head.size(), 0);
-    rows_with_added_.assign(static_cast<std::size_t>(frame_.ny), 0);
-  }
+  if (found_in_parallel) changed_cells_.assign(node_cells_.head.size(), 0);
   for (std::size_t k = 0; k < holes_.size(); ++k) {
     const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
     Attachment at;
@@ -242,11 +238,23 @@ bool HoleBridger::any_found_bridge_crosses(std::uint32_t k) const {
   });
 }
 
+/// Whether a cell the walk from h would read (any_on_ray's, with room to spare: down to three
+/// columns short of the hit's) lists an added edge: the added lists hold only the bridges of
+/// holes found again, in a few cells, so most walks need not be made.
+bool HoleBridger::any_added_near_ray(const Point& h, const RayHit& hit) const {
+  const std::size_t row_start = frame_.cell(0, frame_.row(h.y));
+  const int first = hit.edge == UINT32_MAX ? 0 : std::max(0, frame_.column(hit.x) - 4);
+  const std::uint32_t* head = edge_cells_.head.data() + row_start;
+  bool any = false;
+  for (int col = first; col <= frame_.column(h.x); ++col) any |= head[col] != UINT32_MAX;
+  return any;
+}
+
 /// Whether a bridge (an added edge) crosses the ray from h where the serial search would meet
 /// it: at or right of the edge the search hit, in the cells that search reads. The bridges
 /// spliced as found only where `found_bridges` (maybe_crossed_ says none of them can).
 bool HoleBridger::crossed_by_bridge(const Point& h, const RayHit& hit, bool found_bridges) const {
-  if (!found_bridges && !rows_with_added_[static_cast<std::size_t>(frame_.row(h.y))]) return false;
+  if (!found_bridges && !any_added_near_ray(h, hit)) return false;
   return any_on_ray(h, hit, [&](std::size_t cell) {
     bool crossed = false;
     if (found_bridges)
@@ -325,11 +333,6 @@ void HoleBridger::insert_edges(std::uint32_t start, std::uint32_t back) {
     edge_cells_.add(cell, first);
     if (second != UINT32_MAX) edge_cells_.add(cell, second);
   });
-  if (!rows_with_added_.empty()) {  // in parts: where crossed_by_bridge has lists to read
-    const auto [lo, hi] = std::minmax(b_->pos[start].y, b_->pos[b_->next[start]].y);
-    for (int row = frame_.row(lo); row <= frame_.row(hi); ++row)
-      rows_with_added_[static_cast<std::size_t>(row)] = 1;
-  }
 }
 
 /// The merged node at exactly p whose interior sector contains `towards`; UINT32_MAX if no

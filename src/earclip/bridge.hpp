@@ -141,6 +141,7 @@ class HoleBridger {
   template <class Crosses>
   bool any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const;
   bool any_found_bridge_crosses(std::uint32_t k) const;
+  bool any_added_near_ray(const Point& h, const RayHit& hit) const;
   bool crossed_by_bridge(const Point& h, const RayHit& hit, bool found_bridges) const;
   template <class Visit>
   void for_each_indexed_bridge(std::size_t cell, Visit&& visit) const;
@@ -191,8 +192,6 @@ class HoleBridger {
   /// In the parallel splice: the node cells where a splice added a node or turned a node's
   /// sector (a node found there by the search must be looked up again).
   std::vector<std::uint8_t> changed_cells_;
-  /// In the parallel splice: the grid's rows whose cells list added edges.
-  std::vector<std::uint8_t> rows_with_added_;
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   std::size_t redone_ = 0;
   std::vector<std::uint32_t> repeated_;
