@@ -28,6 +28,14 @@ enum class Crossing { none, left, through };
   return Crossing::left;
 }
 
+/// ray_crossing for an edge with its ends in either order; none for a horizontal edge (its
+/// endpoints end other edges).
+[[gnu::always_inline]] inline Crossing edge_crossing(const Point& h, Point a, Point b, double& x) {
+  if (a.y == b.y) return Crossing::none;
+  if (a.y > b.y) std::swap(a, b);
+  return ray_crossing(h, a, b, x);
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary,
@@ -184,13 +192,12 @@ HoleBridger::Attachment HoleBridger::find(std::uint32_t hole, std::uint32_t rank
   return at;
 }
 
-/// Whether segment lo-hi crosses the leftward ray from h where a search that hit `hit` would
+/// Whether segment a-b crosses the leftward ray from h where a search that hit `hit` would
 /// meet it: at or right of the edge it hit, or exactly through h.
-bool HoleBridger::crosses_before_hit(const Point& h, const RayHit& hit, Point lo, Point hi) {
-  if (lo.y == hi.y) return false;  // horizontal: its endpoints end other edges
-  if (lo.y > hi.y) std::swap(lo, hi);
+bool HoleBridger::crosses_before_hit(const Point& h, const RayHit& hit, const Point& a,
+                                     const Point& b) {
   double x = 0;
-  const Crossing c = ray_crossing(h, lo, hi, x);
+  const Crossing c = edge_crossing(h, a, b, x);
   return c == Crossing::through || (c == Crossing::left && (hit.edge == UINT32_MAX || x >= hit.x));
 }
 
@@ -352,11 +359,9 @@ std::uint32_t HoleBridger::node_at(const Point& p, const Point& towards, std::ui
 HoleBridger::RayHit HoleBridger::cast_left(const Point& h, std::uint32_t rank) const {
   RayHit hit;
   hit.x = -std::numeric_limits<double>::infinity();
-  const auto visit = [&](std::uint32_t id, Point lo, Point hi) {
-    if (lo.y == hi.y) return;  // horizontal: its endpoints end other edges
-    if (lo.y > hi.y) std::swap(lo, hi);
+  const auto visit = [&](std::uint32_t id, const Point& a, const Point& b) {
     double x = 0;
-    const Crossing c = ray_crossing(h, lo, hi, x);
+    const Crossing c = edge_crossing(h, a, b, x);
     if (c == Crossing::through) hit.touching_edge = std::min(hit.touching_edge, id);
     if (c == Crossing::left && (x > hit.x || (x == hit.x && id < hit.edge))) {
       hit.x = x;

@@ -137,7 +137,7 @@ class HoleBridger {
                   std::vector<std::uint32_t>& unjoined);
   bool merged(std::uint32_t item, std::uint32_t rank) const { return rank_[item] < rank; }
   Attachment find(std::uint32_t hole, std::uint32_t rank) const;
-  static bool crosses_before_hit(const Point& h, const RayHit& hit, Point lo, Point hi);
+  static bool crosses_before_hit(const Point& h, const RayHit& hit, const Point& a, const Point& b);
   template <class Crosses>
   bool any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const;
   bool any_found_bridge_crosses(std::uint32_t k) const;

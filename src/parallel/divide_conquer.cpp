@@ -234,7 +234,7 @@ bool walk_cycle_in_parts(const Boundary& b, std::uint32_t entry, const RunContex
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                         MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
                         std::uint32_t& best_effort_vertex, std::size_t& region_ordered,
-                        VariantScratchPtr& scratch, bool many_holes) {
+                        VariantScratchPtr& scratch, double last_share) {
   if (!scratch) scratch.reset(new VariantScratch);
   if (scratch->slab_levels.empty()) scratch->slab_levels.emplace_back(1);
   std::vector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
@@ -251,11 +251,6 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
       } while (v != entry && cycle.size() <= b.size());
     });
   }
-  // Holes are bridged to the left, so the slabs left of the last line are cut into strips by
-  // the bridges that cross both their lines, but the rightmost slab, with no line on its right,
-  // stays one piece, which costs the clipper 2-2.8x as much a node (random-holes-100k at 16
-  // partitions: 2.0 ms against the others' 0.75): half a share of the vertices there.
-  const double last_share = many_holes ? 0.5 : 1.0;
   if (ctx.partitions >= 2 && cycle.size() >= 4 && cycle.size() <= b.size())
     for (double after : split_positions(b, cycle, ctx.partitions, ctx, last_share))
       lines.emplace_back().after = after;

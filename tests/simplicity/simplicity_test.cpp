@@ -10,6 +10,7 @@
 #include <memory>
 #include <numbers>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <span>
 
@@ -490,6 +491,24 @@ TEST(Simplicity, RootGridInChunksFindsTheSameConflict) {
   }
 }
 
+/// check.check of `clean` on `given` at `partitions`: the smallest edge in a conflict is
+/// `expected` (the grid's), and without one no edges touch. Returns the tasks of its pairs of
+/// runs (0 where the runs did not decide).
+std::size_t expect_runs_find(SimplicityCheck& check, const CleanPolygon& clean, RunContext given,
+                             std::uint32_t partitions, std::optional<std::uint32_t> expected) {
+  RunProfile profile;
+  given.partitions = partitions;
+  given.profile = &profile;
+  const Verdict verdict = check.check(clean, given, true);
+  EXPECT_EQ(verdict.violation, expected) << partitions << " partitions";
+  if (!expected) {
+    EXPECT_EQ(verdict.touching, Verdict::Touching::no) << partitions << " partitions";
+  }
+  const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(),
+                                  [](auto& p) { return p.name == "check simplicity: run pairs"; });
+  return pairs == profile.phases.end() ? 0 : pairs->task_seconds.size();
+}
+
 /// Up to two partitions a coast-like outline (here a circle with a ripple: runs of about 12
 /// edges monotone in x) is checked by its runs, the pairs of runs in tasks: on 1, 2 and 4
 /// threads, with 1 and 2 partitions, the smallest edge in any conflict as the grid alone finds
@@ -512,21 +531,10 @@ TEST(Simplicity, RunPairsInTasksFindTheSmallestConflict) {
     ASSERT_EQ(by_grid.has_value(), moved > 0);
     for (const RunContext& given : contexts.list) {
       for (std::uint32_t partitions : {1u, 2u}) {
-        RunProfile profile;
-        RunContext ctx = given;
-        ctx.partitions = partitions;
-        ctx.profile = &profile;
-        const Verdict verdict = check.check(clean, ctx, true);
-        EXPECT_EQ(verdict.violation, by_grid) << partitions << " partitions";
-        if (!by_grid) {
-          EXPECT_EQ(verdict.touching, Verdict::Touching::no);
-        }
-        const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
-          return p.name == "check simplicity: run pairs";
-        });
-        ASSERT_NE(pairs, profile.phases.end());
+        const std::size_t tasks = expect_runs_find(check, clean, given, partitions, by_grid);
+        ASSERT_NE(tasks, 0u) << "decided by the runs";
         // On one partition one walk; in parts tasks of equal pair counts.
-        EXPECT_EQ(pairs->task_seconds.size() > 1, PEAR_HAS_THREADS && partitions > 1);
+        EXPECT_EQ(tasks > 1, PEAR_HAS_THREADS && partitions > 1);
       }
     }
   }
@@ -561,23 +569,10 @@ TEST(Simplicity, RunPairsCutInsideARunsPairsFindTheSmallestConflict) {
     SimplicityCheck check;
     const auto by_grid = check.find_violation(clean, RunContext{}, Method::grid_only);
     ASSERT_EQ(by_grid.has_value(), variant > 0);
-    for (const RunContext& given : contexts.list) {
-      for (std::uint32_t partitions : {2u, 3u, 16u, 64u}) {
-        RunProfile profile;
-        RunContext ctx = given;
-        ctx.partitions = partitions;
-        ctx.profile = &profile;
-        const Verdict verdict = check.check(clean, ctx, true);
-        EXPECT_EQ(verdict.violation, by_grid) << partitions << " partitions";
-        if (!by_grid) {
-          EXPECT_EQ(verdict.touching, Verdict::Touching::no);
-        }
-        const auto pairs = std::find_if(profile.phases.begin(), profile.phases.end(), [](auto& p) {
-          return p.name == "check simplicity: run pairs";
-        });
-        ASSERT_NE(pairs, profile.phases.end()) << "decided by the runs";
-      }
-    }
+    for (const RunContext& given : contexts.list)
+      for (std::uint32_t partitions : {2u, 3u, 16u, 64u})
+        ASSERT_NE(expect_runs_find(check, clean, given, partitions, by_grid), 0u)
+            << "decided by the runs";
   }
 }
 
