@@ -6,10 +6,13 @@
 //   2. cut: each chunk clips its ears; marked nodes are never adjacent, so every link has one
 //      writer, and each triangle belongs to its base node's chunk;
 //   3. update: each chunk re-classifies the neighbours of its clipped nodes.
-// Rounds go on while they clip enough; the sequential engine finishes the rest.
+// Rounds go on while they clip enough; then the landmarks that are ears are clipped, a strip
+// (what is left of a comb) is fanned in tasks (fan_finish.hpp), and the sequential engine
+// finishes anything else.
 #include <algorithm>
 
 #include "core/ear_test.hpp"
+#include "fan_finish.hpp"
 #include "variant_scratch.hpp"
 #include "variants.hpp"
 
@@ -44,6 +47,26 @@ class MarkAndCut {
       clipped += triangles_[c].size();
     }
     return clipped;
+  }
+
+  /// Landmarks are never marked, so no round clips them: what the rounds leave of a comb is a
+  /// strip with a tooth at every landmark. Those that are ears are clipped here, one by one.
+  void clip_landmark_ears(TriangleList& out) {
+    ctx_.run_serial("landmark ears", [&] {
+      for (std::size_t chunk = 0; chunk < chunks_; ++chunk) {
+        const std::uint32_t v = landmark(chunk), p = b_.prev[v], n = b_.next[v];
+        if (!s_.alive[v] || s_.pinch[p] || s_.pinch[v] || s_.pinch[n] || !is_ear(v)) continue;
+        out.push_back({b_.vertex[p], b_.vertex[v], b_.vertex[n]});
+        b_.unlink(v);
+        s_.alive[v] = 0;
+        for (const std::uint32_t u : {p, n}) {
+          const std::uint32_t owner = s_.owner[u];
+          if (owner == SharedBoundary::landmark || !s_.hashed[u] || b_.turn(u) < 0) continue;
+          s_.hashed[u] = 0;
+          s_.start_grids[owner].remove(u, b_.pos[u]);
+        }
+      }
+    });
   }
 
  private:
@@ -124,7 +147,11 @@ std::uint32_t mark_and_cut(Boundary& b, std::uint32_t entry, const RunContext& c
     live -= clipped;
     if (clipped < 20 || clipped * 64 < live) break;
   }
-  return s.refresh_order(ctx);
+  rounds.clip_landmark_ears(out);
+  // What is left of a comb: one strip, whose ears would come one at a time.
+  const std::uint32_t rest = s.refresh_order(ctx);
+  if (rest != no_node && finish_strip_in_fans(b, s.order, s.pinch, ctx, out)) return no_node;
+  return rest;
 }
 
 }  // namespace pear::detail

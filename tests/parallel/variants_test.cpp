@@ -3,7 +3,9 @@
 // status contract as the sequential engine, and the same triangles whatever the thread count.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "gtest_corpus.hpp"
 #include "pear/generate.hpp"
@@ -126,6 +128,31 @@ TEST(Tricky, CollinearRunsAcrossChainEnds) {
   for (int i = 0; i < 2000; ++i) ring.push_back({2000.0 - i, 2000});
   for (int i = 0; i < 2000; ++i) ring.push_back({0, 2000.0 - i});
   check_variants({ring}, true);
+}
+
+TEST(Tricky, CombsStripIsFannedInTasks) {
+  // Mark-and-cut's rounds leave of a comb a strip (its teeth's feet on a line, the base across)
+  // and a tooth at every landmark. The landmarks' ears are clipped after the rounds, the strip
+  // is fanned in tasks: nothing is left for the sequential engine.
+  const Polygon comb = generate_polygon("comb", 20'000, 11);
+  for (unsigned partitions : {2u, 3u, 16u}) {
+    SCOPED_TRACE("partitions " + std::to_string(partitions));
+    RunProfile profile;
+    const Options options{.algorithm = Algorithm::mark_and_cut,
+                          .threads = 2,
+                          .partitions = partitions,
+                          .profile = &profile};
+    const auto triangles = check_polygon(comb, true, options);
+    const auto ran = [&](std::string_view phase) {
+      return std::any_of(profile.phases.begin(), profile.phases.end(),
+                         [&](const auto& p) { return p.name == phase; });
+    };
+    EXPECT_TRUE(ran("strip: fans"));
+    EXPECT_FALSE(ran("clip sequentially"));
+    Options one_thread = options;
+    one_thread.threads = 1, one_thread.profile = nullptr;
+    EXPECT_EQ(triangulate(comb, one_thread).triangles, triangles) << "not deterministic";
+  }
 }
 
 TEST(Tricky, HolesTouchingAtVerticesAndBridges) {
