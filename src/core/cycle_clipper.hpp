@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "core/boundary.hpp"
+#include "core/pinches.hpp"
 #include "core/stage.hpp"
 
 namespace pear::detail {
@@ -16,9 +17,10 @@ class CycleClipper {
   virtual ~CycleClipper() = default;
   /// Clips the cycle through `entry`, appending its triangles (the caller's vertex indices,
   /// counterclockwise) to `out`. Returns false when a best-effort fallback had to act: the
-  /// cycle was not weakly simple, and the result may overlap.
-  virtual bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
-                    TriangleList& out) = 0;
+  /// cycle was not weakly simple, and the result may overlap. `shared`: the nodes at repeated
+  /// positions when the caller knows them (else the clipper hashes every position).
+  virtual bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+                    SharedPositions shared) = 0;
   /// The caller's index of the vertex where the last clip's first fallback acted.
   virtual std::uint32_t best_effort_vertex() const = 0;
 };

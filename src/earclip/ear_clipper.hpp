@@ -20,8 +20,9 @@ namespace pear::detail {
 
 class EarClipper final : public CycleClipper {
  public:
-  bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out) override {
-    return run(b, entry, heuristic, out);
+  bool clip(Boundary& b, std::uint32_t entry, EarHeuristic heuristic, TriangleList& out,
+            SharedPositions shared) override {
+    return run(b, entry, heuristic, out, shared);
   }
   /// Clips the cycle through `entry` down to nothing, appending triangles (the caller's vertex
   /// indices, counterclockwise) to `out`. Returns false when a best-effort fallback had to be

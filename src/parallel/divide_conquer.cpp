@@ -4,9 +4,12 @@
 // exactly falls back to the sequential engine on the whole boundary, which is never modified
 // before that point.
 #include <algorithm>
+#include <array>
 #include <span>
 
 #include "core/link_runs.hpp"
+#include "geometry/segments.hpp"
+#include "geometry/sort.hpp"
 #include "pear/config.hpp"
 
 #include "divide_conquer_fans.hpp"
@@ -83,9 +86,47 @@ std::uint8_t boundary_edges(const Boundary& piece, const PieceCorner* corners, s
   return mask;
 }
 
+/// The nodes of a piece that share a position with another node of it (what the clipper would
+/// find by hashing every position, which cost Koch-8's two parts 2.6% of the run's time), or
+/// unknown where `shared` does not know the input's. Only two kinds of nodes can: input
+/// vertices that `shared` marks (they share a position on the whole boundary), and nodes on the
+/// piece's split lines (a Steiner point's x is exactly its line's); those are compared. Left to
+/// the clipper in a build without threads (the same marks; the WebAssembly module's size).
+SharedPositions piece_pinches(const Boundary& piece, const PieceCorner* corners,
+                              SharedPositions shared, DividePart& part) {
+  if (!PEAR_HAS_THREADS || (shared.marks == nullptr && !shared.none)) return {};
+  const std::uint32_t count = piece.size();
+  std::array<double, 2> line_x{};
+  std::size_t lines = 0;  // a piece lies in one slab: at most two lines
+  const auto on_a_line = [&](double x) {
+    return std::find(line_x.begin(), line_x.begin() + lines, x) != line_x.begin() + lines;
+  };
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if (!is_steiner(corners[i]) || on_a_line(piece.pos[i].x)) continue;
+    if (lines == line_x.size()) return {};
+    line_x[lines++] = piece.pos[i].x;
+  }
+  std::vector<std::uint32_t>& candidates = part.on_line;
+  candidates.clear();
+  for (std::uint32_t i = 0; i < count; ++i)
+    if (on_a_line(piece.pos[i].x) ||
+        (!is_steiner(corners[i]) && shared.marks && (*shared.marks)[corner_index(corners[i])]))
+      candidates.push_back(i);
+  detail::sort(candidates.begin(), candidates.end(), [&](std::uint32_t u, std::uint32_t v) {
+    return lexicographic_less(piece.pos[u], piece.pos[v]);
+  });
+  std::vector<std::uint8_t>& pinch = part.pinch;
+  pinch.assign(count, 0);
+  for (std::size_t k = 1; k < candidates.size(); ++k)
+    if (piece.pos[candidates[k]] == piece.pos[candidates[k - 1]])
+      pinch[candidates[k]] = pinch[candidates[k - 1]] = 1;
+  return {&pinch, false};
+}
+
 /// Clips every piece of a part with the sequential engine, on the rounded Steiner points.
 void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pieces& pieces,
-               EarHeuristic heuristic, MakeClipper make_clipper, DividePart& part) {
+               EarHeuristic heuristic, MakeClipper make_clipper, SharedPositions shared,
+               DividePart& part) {
   part.kept.clear(), part.at_steiner.clear(), part.on_boundary.clear();
   part.ok = true;
   CycleClipper& clipper = part.clipper_from(make_clipper);
@@ -98,7 +139,8 @@ void clip_part(const Boundary& b, const std::vector<SplitLine>& lines, const Pie
     for (std::uint32_t i = 0; i < count; ++i) piece.add(corner_pos(b, lines, corners[i]), i);
     for (std::uint32_t i = 0; i < count; ++i) piece.link(i, i + 1 == count ? 0 : i + 1);
     local.clear();
-    if (count < 3 || !clipper.clip(piece, 0, heuristic, local)) {
+    if (count < 3 ||
+        !clipper.clip(piece, 0, heuristic, local, piece_pinches(piece, corners, shared, part))) {
       part.ok = false;
       return;
     }
@@ -170,8 +212,8 @@ bool remove_steiner_points(const Boundary& b, const std::vector<SplitLine>& line
 /// Splits, clips the parts in parallel and removes the Steiner points; appends to `out`.
 /// Returns false (with `out` possibly extended) when the sequential engine must do it instead.
 bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeuristic heuristic,
-                       MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
-                       std::size_t& region_ordered, VariantScratch& scratch) {
+                       MakeClipper make_clipper, SharedPositions shared, const RunContext& ctx,
+                       TriangleList& out, std::size_t& region_ordered, VariantScratch& scratch) {
   const std::span<const DivideSlab> slabs = split_into_parts(b, lines, ctx, scratch);
   const std::size_t count = slabs.size();
   if (count == 0) return false;
@@ -180,7 +222,7 @@ bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeur
   std::vector<DividePart*> parts(count);
   for (std::size_t s = 0; s < count; ++s) parts[s] = kept[s].get();
   ctx.run_tasks("clip parts", count, [&](std::size_t s) {
-    clip_part(b, lines, slabs[s].pieces, heuristic, make_clipper, *parts[s]);
+    clip_part(b, lines, slabs[s].pieces, heuristic, make_clipper, shared, *parts[s]);
   });
   if (std::any_of(parts.begin(), parts.end(), [](const DividePart* p) { return !p->ok; }))
     return false;
@@ -234,7 +276,7 @@ bool walk_cycle_in_parts(const Boundary& b, std::uint32_t entry, const RunContex
 bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                         MakeClipper make_clipper, const RunContext& ctx, TriangleList& out,
                         std::uint32_t& best_effort_vertex, std::size_t& region_ordered,
-                        VariantScratchPtr& scratch, double last_share) {
+                        VariantScratchPtr& scratch, SharedPositions shared, double last_share) {
   if (!scratch) scratch.reset(new VariantScratch);
   if (scratch->slab_levels.empty()) scratch->slab_levels.emplace_back(1);
   std::vector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
@@ -257,7 +299,8 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
   const char* phase = "clip sequentially";
   if (!lines.empty()) {
     const std::size_t start = out.size();
-    if (split_clip_repair(b, lines, heuristic, make_clipper, ctx, out, region_ordered, *scratch))
+    if (split_clip_repair(b, lines, heuristic, make_clipper, shared, ctx, out, region_ordered,
+                          *scratch))
       return true;
     out.resize(start);
     phase = "fall back to sequential";  // RunProfile shows how often this happens
@@ -266,7 +309,7 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
     scratch->divide_parts.push_back(std::make_unique<DividePart>());
   CycleClipper& clipper = scratch->divide_parts[0]->clipper_from(make_clipper);
   bool complete = true;
-  ctx.run_serial(phase, [&] { complete = clipper.clip(b, entry, heuristic, out); });
+  ctx.run_serial(phase, [&] { complete = clipper.clip(b, entry, heuristic, out, shared); });
   best_effort_vertex = clipper.best_effort_vertex();
   return complete;
 }

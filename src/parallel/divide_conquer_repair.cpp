@@ -262,7 +262,7 @@ bool SteinerRepair::triangulate_hole(std::size_t h, const Boundary& b, EarHeuris
     scratch.hole.clear();
     for (std::uint32_t i = 0; i < count; ++i) scratch.hole.add(b.pos[nodes[i]], i);
     for (std::uint32_t i = 0; i < count; ++i) scratch.hole.link(i, i + 1 == count ? 0 : i + 1);
-    if (!scratch.clipper->clip(scratch.hole, 0, heuristic, scratch.local)) return false;
+    if (!scratch.clipper->clip(scratch.hole, 0, heuristic, scratch.local, {})) return false;
   }
   for (const auto& t : scratch.local) {
     if (!(orient2d(b.pos[nodes[t[0]]], b.pos[nodes[t[1]]], b.pos[nodes[t[2]]]) > 0)) return false;

@@ -38,6 +38,8 @@ struct DividePart {
   TriangleList kept;
   std::vector<SteinerTriangle> at_steiner;
   std::vector<std::uint8_t> on_boundary;  ///< per triangle at Steiner points, see find_holes
+  std::vector<std::uint8_t> pinch;        ///< the piece's nodes at repeated positions
+  std::vector<std::uint32_t> on_line;     ///< nodes of the piece that may share a position
   bool ok = true;
 
   /// The part's clipper from `make`, made again only when another function makes them.

@@ -53,11 +53,13 @@ using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>
 /// a slab of the plane; the holes around the Steiner points come after), or left where it was
 /// when the sequential engine did it all. `scratch`: made on first use (the parts' clippers
 /// among it), kept for the next run.
+/// `shared`: as for partition_and_cut; the parts' clippers get it for their input vertices
+/// (a Steiner point can only meet nodes on its line, which each part compares).
 /// `last_share`: the rightmost part's share of the vertices against each other part's.
 [[gnu::noinline]] bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                                           MakeClipper make_clipper, const RunContext& ctx,
                                           TriangleList& out, std::uint32_t& best_effort_vertex,
                                           std::size_t& region_ordered, VariantScratchPtr& scratch,
-                                          double last_share = 1);
+                                          SharedPositions shared, double last_share = 1);
 
 }  // namespace pear::detail

@@ -353,7 +353,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
       // costs the clipper 2-2.8x as much a node (random-holes-100k at 16 partitions: 2.0 ms
       // against the others' 0.75): with a hole every 64 nodes or more, half a share there.
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
-                                best_effort_vertex, region_ordered_, variant_scratch_,
+                                best_effort_vertex, region_ordered_, variant_scratch_, shared_,
                                 (clean_.ring_count() - 1) * 64 >= boundary_.size() ? 0.5 : 1);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
