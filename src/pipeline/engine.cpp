@@ -414,13 +414,15 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
   if (options.delaunay && status == Status::ok) {
-    // Where automatic took mark-and-cut (few long runs: a comb, an outline nearly convex) the
-    // flips in sets cost more than they save: at 2 threads the 100k comb's CDT 0.77-0.99x the
-    // sequential CDT with sets, 0.99-1.02x flipping on one thread; a 100k ellipse's 0.73-0.78x
-    // and 0.96-1.00x.
+    // Where the outline has a few long runs (a comb, an outline convex or nearly so) the flips
+    // go on one partition, whichever clip came first: at 2 threads the 100k comb's CDT
+    // 0.77-0.99x the sequential CDT with sets, 0.99-1.02x on one thread. Points in convex
+    // position have long Delaunay edges that cross any sets, and each set's own CDT is far from
+    // the whole one: on a 100k ellipse the flips across the sets' borders were 462,000 after
+    // the sequential clip at 2 partitions and 35 million at 16 (1.6 s against 64 ms on one
+    // partition), 16.7 and 64 million after divide-and-conquer's at 2 and 16.
     RunContext flip_ctx = ctx;
-    if (options.algorithm == Algorithm::automatic && algorithm == Algorithm::mark_and_cut)
-      flip_ctx.partitions = 1;
+    if (flip_ctx.partitions > 1 && outline.few_long_runs()) flip_ctx.partitions = 1;
     make_delaunay(caller_points(input), clean_, out, flip_ctx, delaunay, region_ordered_);
   }
   return status;
