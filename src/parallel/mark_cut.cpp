@@ -50,12 +50,15 @@ class MarkAndCut {
   }
 
   /// Landmarks are never marked, so no round clips them: what the rounds leave of a comb is a
-  /// strip with a tooth at every landmark. Those that are ears are clipped here, one by one.
+  /// strip with a tooth at every landmark. Those that are ears are clipped here, one by one
+  /// (but the last triangle, left to the sequential engine).
   void clip_landmark_ears(TriangleList& out) {
     ctx_.run_serial("landmark ears", [&] {
       for (std::size_t chunk = 0; chunk < chunks_; ++chunk) {
         const std::uint32_t v = landmark(chunk), p = b_.prev[v], n = b_.next[v];
-        if (!s_.alive[v] || s_.pinch[p] || s_.pinch[v] || s_.pinch[n] || !is_ear(v)) continue;
+        if (!s_.alive[v] || b_.next[n] == p || s_.pinch[p] || s_.pinch[v] || s_.pinch[n] ||
+            !is_ear(v))
+          continue;
         out.push_back({b_.vertex[p], b_.vertex[v], b_.vertex[n]});
         b_.unlink(v);
         s_.alive[v] = 0;
