@@ -62,12 +62,8 @@ class MarkAndCut {
         out.push_back({b_.vertex[p], b_.vertex[v], b_.vertex[n]});
         b_.unlink(v);
         s_.alive[v] = 0;
-        for (const std::uint32_t u : {p, n}) {
-          const std::uint32_t owner = s_.owner[u];
-          if (owner == SharedBoundary::landmark || !s_.hashed[u] || b_.turn(u) < 0) continue;
-          s_.hashed[u] = 0;
-          s_.start_grids[owner].remove(u, b_.pos[u]);
-        }
+        // A neighbour that turned convex stays hashed: it can only make a later landmark's ear
+        // test stricter, and no round tests again.
       }
     });
   }
