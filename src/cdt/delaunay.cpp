@@ -67,7 +67,7 @@ void copy_in_tasks(const TriangleList& from, TriangleList& to, const RunContext&
     return;
   }
   to.resize(from.size());
-  const std::size_t tasks = std::clamp<std::size_t>(from.size() >> 16, 1, 4 * ctx.partitions);
+  const std::size_t tasks = ctx.tasks_for(from.size(), std::size_t{1} << 16);
   ctx.run_tasks("cdt clip's triangles", tasks, [&](std::size_t t) {
     const auto first = from.begin() + static_cast<std::ptrdiff_t>(from.size() * t / tasks);
     const auto last = from.begin() + static_cast<std::ptrdiff_t>(from.size() * (t + 1) / tasks);

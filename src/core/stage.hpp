@@ -3,6 +3,7 @@
 // where a stage's tasks run. The algorithm folders share these and nothing else.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdint>
@@ -73,6 +74,15 @@ struct RunContext {
   RunProfile* profile = nullptr;
 
   bool parallel() const { return runner != nullptr && runner->concurrency() > 1; }
+  /// Tasks for a pass over `items` in parts: four a partition (more tasks than threads even
+  /// out the uneven ones), but each of at least `min_items` and at most 512 in all (a pass
+  /// that keeps a count per task and band, the bridges' grid, must not grow square with 4,096
+  /// partitions). Never 0.
+  std::size_t tasks_for(std::size_t items, std::size_t min_items) const {
+    const std::size_t most =
+        std::min<std::size_t>(512, std::max<std::size_t>(1, items / min_items));
+    return std::clamp<std::size_t>(std::size_t{partitions} * 4, 1, most);
+  }
 
   /// Runs task(i) for i in [0, count) in parallel and waits; records the phase when profiling.
   template <class Task>

@@ -79,7 +79,7 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
     holes_[k] = {best, static_cast<std::uint32_t>(k + 1)};
   };
   if (parallel) {
-    const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
+    const std::size_t tasks = ctx.tasks_for(holes, 64);
     ctx.run_tasks("bridge: leftmost vertices", tasks, [&](std::size_t t) {
       for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k) leftmost(k);
     });
@@ -103,7 +103,7 @@ void HoleBridger::order_holes(const CleanPolygon& polygon, const RunContext& ctx
     rank_.reserve(most_ids());
     rank_.resize(polygon.points.size());
   });
-  const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
+  const std::size_t tasks = ctx.tasks_for(holes, 64);
   ctx.run_tasks("bridge: ranks", tasks, [&](std::size_t t) {
     assign_ranks(polygon, holes * t / tasks, holes * (t + 1) / tasks);
   });
@@ -124,7 +124,7 @@ void HoleBridger::assign_ranks(const CleanPolygon& polygon, std::size_t from, st
 void HoleBridger::find_all(const RunContext& ctx) {
   const std::size_t holes = holes_.size();
   found_.resize(holes);
-  const std::size_t tasks = tasks_for(holes, 4, ctx.partitions);
+  const std::size_t tasks = ctx.tasks_for(holes, 4);
   ctx.run_tasks("bridge: find attachments", tasks, [&](std::size_t t) {
     for (std::size_t k = holes * t / tasks; k < holes * (t + 1) / tasks; ++k)
       found_[k] = find(holes_[k].leftmost, static_cast<std::uint32_t>(k + 1));

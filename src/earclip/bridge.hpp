@@ -32,19 +32,6 @@ class HoleBridger {
  public:
   /// Up to this many holes the grid is one cell: each hole scans every edge and node.
   static constexpr std::size_t few_holes = 4;
-  /// In parts, each phase has this many tasks per part: more tasks than threads even out
-  /// holes whose rays run far and bands of the grid that hold more edges.
-  static constexpr std::size_t tasks_per_part = 4;
-
-  /// Tasks for `items` of work in parts: tasks_per_part per part, but each at least
-  /// `min_items` and at most 512 in all (the grid keeps a count per chunk and band: 4,096
-  /// partitions must not make it square in the polygon's size). Never 0.
-  static std::size_t tasks_for(std::size_t items, std::size_t min_items, std::uint32_t partitions) {
-    const std::size_t most =
-        std::min<std::size_t>(512, std::max<std::size_t>(1, items / min_items));
-    return std::clamp<std::size_t>(std::size_t{partitions} * tasks_per_part, 1, most);
-  }
-
   /// `boundary` holds one node per clean vertex, each ring already linked as a cycle.
   /// Returns the leftmost node of every hole it could not join (nothing lies to its left: the
   /// hole is outside the outer ring, so the input is not a valid polygon). `in_parts`: the

@@ -125,7 +125,7 @@ void HoleBridger::fill_lists_in_parts(std::size_t first_list, std::size_t count,
 /// The same grid in parts: the extent in tasks, then both lists by fill_lists_in_parts.
 void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx) {
   const auto nodes = static_cast<std::uint32_t>(polygon.points.size());
-  const std::size_t tasks = tasks_for(nodes, 4096, ctx.partitions);
+  const std::size_t tasks = ctx.tasks_for(nodes, 4096);
   const auto first = [&](std::size_t t) { return static_cast<std::uint32_t>(nodes * t / tasks); };
   std::vector<std::pair<Point, Point>> extents(tasks);
   edge_start_.reserve(most_ids());
@@ -167,7 +167,7 @@ void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunCont
 /// instructions a hole).
 void HoleBridger::index_found_bridges(const RunContext& ctx) {
   const auto holes = static_cast<std::uint32_t>(holes_.size());
-  const std::size_t tasks = tasks_for(holes, 64, ctx.partitions);
+  const std::size_t tasks = ctx.tasks_for(holes, 64);
   fill_lists_in_parts(
       2, 1, holes, tasks, ctx,
       {"bridge: found bridges", "bridge: found bridges scatter", "bridge: found bridges fill"},

@@ -14,16 +14,14 @@ namespace {
 /// A strip has at most four nodes that are not straight: the run's ends, A and B.
 constexpr std::size_t max_bends = 4;
 
-/// Tasks for a pass over `count` places: one a 4,096, a few a partition at most.
-std::size_t tasks_for(std::size_t count, const RunContext& ctx) {
-  return std::clamp<std::size_t>(count / 4096, 1, 4 * std::max<std::size_t>(ctx.partitions, 1));
-}
+/// Places of the cycle a task of its passes takes.
+constexpr std::size_t places_per_task = 4096;
 
 /// The places in `order` of the nodes that are not exactly between their neighbours on one
 /// line (or lie where another node does), in order; more than max_bends: none.
 std::vector<std::size_t> bends(const Boundary& b, std::span<const std::uint32_t> order,
                                std::span<const std::uint8_t> pinch, const RunContext& ctx) {
-  const std::size_t m = order.size(), tasks = tasks_for(m, ctx);
+  const std::size_t m = order.size(), tasks = ctx.tasks_for(m, places_per_task);
   // Each task's first max_bends + 1 (one more: too many), and how many it found.
   std::vector<std::size_t> found(tasks * (max_bends + 2), 0);
   ctx.run_tasks("strip: bends", tasks, [&](std::size_t task) {
@@ -71,7 +69,7 @@ bool finish_strip_in_fans(const Boundary& b, std::span<const std::uint32_t> orde
   const bool use_b = !whole && !pinch[bb] && orient2d(pb, p0, b.pos[run(1)]) > 0;
   if (!use_a && !use_b) return false;
   // B's fan takes r_0 .. r_split, A's r_split .. r_last.
-  const std::size_t tasks = tasks_for(last_edge, ctx);
+  const std::size_t tasks = ctx.tasks_for(last_edge, places_per_task);
   std::size_t split = use_a ? 0 : last_edge;
   if (use_a && use_b) {
     std::vector<std::size_t> first_nearer(tasks, last_edge);

@@ -216,7 +216,7 @@ std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx, bool in_p
   std::uint32_t* prev = boundary_.prev.data();
   std::uint32_t* next = boundary_.next.data();
   if (in_parts) {
-    const std::size_t tasks = HoleBridger::tasks_for(n, 4096, ctx.partitions);
+    const std::size_t tasks = ctx.tasks_for(n, 4096);
     ctx.run_tasks("bridge: boundary", tasks, [&](std::size_t t) {
       const auto first = static_cast<std::uint32_t>(n * t / tasks);
       const auto end = static_cast<std::uint32_t>(n * (t + 1) / tasks);
@@ -251,8 +251,7 @@ void Engine::bridge(bool checked, const RunContext& ctx) {
   const std::vector<std::uint32_t> unjoined = bridge_holes(ctx, in_parts);
   std::uint32_t overlapping = UINT32_MAX;
   if (touching) {
-    const std::size_t tasks =
-        in_parts ? HoleBridger::tasks_for(boundary_.size(), 4096, ctx.partitions) : 1;
+    const std::size_t tasks = in_parts ? ctx.tasks_for(boundary_.size(), 4096) : 1;
     overlapping = touching_.untangle(boundary_, ctx, tasks);
     cycles_ = touching_.cycles(boundary_, 0, unjoined, ctx,
                                in_parts ? link_tasks(boundary_.size(), ctx.partitions) : 1);

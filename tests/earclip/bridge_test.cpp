@@ -111,7 +111,7 @@ std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = 
           EXPECT_NE(find, profile.phases.end());
           if (find == profile.phases.end()) return;
           EXPECT_EQ(find->task_seconds.size(),
-                    HoleBridger::tasks_for(clean.ring_count() - 1, 4, partitions));
+                    RunContext{.partitions = partitions}.tasks_for(clean.ring_count() - 1, 4));
           EXPECT_GT(find->task_seconds.size(), 1u);
         }
       });
