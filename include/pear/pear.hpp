@@ -92,12 +92,21 @@ class PEAR_API Triangulator {
     Triangulation<Index> result;
     if (!engine_) acquire(detail::vertex_count(rings));
     detail::FlatPolygon& flat = input_buffer();
-    if (!detail::flatten(rings, flat)) {
+    bool counted;
+    if constexpr (detail::point_array_rings<Rings>)
+      counted = detail::ring_spans(rings, flat);
+    else
+      counted = detail::flatten(rings, flat);
+    if (!counted) {
       result.status = Status::index_overflow;
       result.diagnostics.push_back({Issue::index_overflow, 0, 0});
       return result;
     }
-    triangulate_into(PolygonView{flat.points, flat.ring_starts}, options, result);
+    if constexpr (detail::point_array_rings<Rings>)
+      into(detail::RingSpans{flat.rings, flat.ring_starts}, flat.ring_starts.back(), options,
+           result);
+    else
+      triangulate_into(PolygonView{flat.points, flat.ring_starts}, options, result);
     return result;
   }
 
@@ -174,6 +183,9 @@ class PEAR_API Triangulator {
              std::vector<std::array<std::uint32_t, 3>>& triangles,
              std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   Status run(const CoordinateView& polygon, const Options& options,
+             std::vector<std::array<std::uint32_t, 3>>& triangles,
+             std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
+  Status run(const detail::RingSpans& polygon, const Options& options,
              std::vector<std::array<std::uint32_t, 3>>& triangles,
              std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay);
   EarStatistics run_statistics(const PolygonView& polygon);

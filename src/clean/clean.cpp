@@ -31,9 +31,10 @@ bool coordinate_in_range(double c) {
 bool name_coordinate_error(const InputPolygon& in, std::size_t from,
                            std::vector<Diagnostic>& diagnostics) {
   for (std::size_t r = from; r + 1 < in.ring_offsets.size(); ++r) {
+    const InputPolygon::Ring ring = in.ring(r);
     for (std::uint32_t i = in.ring_offsets[r]; i < in.ring_offsets[r + 1]; ++i) {
-      const Point p = in[i];
       const std::size_t vertex = i - in.ring_offsets[r];
+      const Point p = ring[vertex];
       if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
         diagnostics.push_back({Issue::non_finite_coordinate, r, vertex});
         return true;
@@ -102,8 +103,9 @@ bool append_deduplicated(const InputPolygon& in, std::size_t ring, CleanPolygon&
   std::size_t kept = first;
   Point last = {std::numeric_limits<double>::quiet_NaN(), 0};  // equal to no point
   bool in_range = true;
+  const InputPolygon::Ring points = in.ring(ring);
   for (std::uint32_t i = begin; i < end; ++i) {
-    const Point p = in[i];
+    const Point p = points[i - begin];
     in_range &= coordinate_in_range(p.x);
     in_range &= coordinate_in_range(p.y);
     out.points[kept] = p;
@@ -232,7 +234,7 @@ bool fewer_than_3_points(const InputPolygon& in, std::size_t ring) {
   Point seen[2];
   std::size_t distinct = 0;
   for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
-    const Point p = in[i];
+    const Point p = in.at(ring, i);
     if ((distinct > 0 && seen[0] == p) || (distinct > 1 && seen[1] == p)) continue;
     if (distinct == 2) return false;
     seen[distinct++] = p;
@@ -360,11 +362,15 @@ void walk_chunk(const InputPolygon& in, std::span<const std::uint32_t> closing, 
       std::lower_bound(offsets.begin(), offsets.begin() + static_cast<std::ptrdiff_t>(rings),
                        begin) -
       offsets.begin());
-  Point last = begin > 0 ? in[begin - 1] : Point{};
+  Point last = begin > 0 ? in.at(in.ring_of(begin - 1), begin - 1) : Point{};
+  // Until a ring is entered, point begin lies in the ring before `next` (begin is inside it).
+  InputPolygon::Ring ring = in.ring(next > 0 ? next - 1 : 0);
+  std::size_t ring_start = offsets[next > 0 ? next - 1 : 0];
   for (std::size_t i = begin; i < end; ++i) {
     bool starts = false;
     for (; next < rings && offsets[next] == i; ++next) enter(next), starts = true;
-    const Point p = in[i];
+    if (starts) ring = in.ring(next - 1), ring_start = offsets[next - 1];
+    const Point p = ring[i - ring_start];
     visit(i, p, (starts || p != last) && i != closing[next - 1]);
     last = p;
   }
@@ -430,8 +436,9 @@ bool clean_in_parts(const InputPolygon& in, CleanPolygon& out, const RunContext&
       const std::uint32_t first = offsets[r], end = offsets[r + 1];
       if (end - first < 2) continue;
       std::uint32_t run = end - 1;
-      while (run > first && in[run - 1] == in[run]) --run;
-      if (run > first && in[run] == in[first]) closing[r] = run;
+      const InputPolygon::Ring ring = in.ring(r);
+      while (run > first && ring[run - 1 - first] == ring[run - first]) --run;
+      if (run > first && ring[run - first] == ring[0]) closing[r] = run;
     }
   });
   std::vector<std::uint32_t> start(chunks + 1, 0);

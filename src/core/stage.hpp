@@ -18,12 +18,14 @@
 
 namespace pear::detail {
 
-/// The caller's polygon as the pipeline reads it: its points, or its interleaved coordinates
-/// (pear::CoordinateView), read where they are. Ring r is points [ring_offsets[r],
-/// ring_offsets[r + 1]).
+/// The caller's polygon as the pipeline reads it, where it is: its points, its interleaved
+/// coordinates (pear::CoordinateView), or its rings' own arrays (pear::Polygon: never copied
+/// into one array first). Ring r is points [ring_offsets[r], ring_offsets[r + 1]), read
+/// through ring(r).
 struct InputPolygon {
-  const Point* points = nullptr;  ///< or
-  const double* xy = nullptr;     ///< x0, y0, x1, y1, ...
+  const Point* points = nullptr;                  ///< or
+  const double* xy = nullptr;                     ///< x0, y0, x1, y1, ... or
+  const std::span<const Point>* rings = nullptr;  ///< each ring's points
   std::size_t count = 0;
   std::span<const std::uint32_t> ring_offsets;
 
@@ -31,12 +33,35 @@ struct InputPolygon {
       : points(view.points.data()), count(view.points.size()), ring_offsets(view.ring_offsets) {}
   InputPolygon(const CoordinateView& view)  // NOLINT(google-explicit-constructor)
       : xy(view.xy.data()), count(view.xy.size() / 2), ring_offsets(view.ring_offsets) {}
+  InputPolygon(const RingSpans& view)  // NOLINT(google-explicit-constructor)
+      : rings(view.rings.data()),
+        count(view.ring_offsets.empty() ? 0 : view.ring_offsets.back()),
+        ring_offsets(view.ring_offsets) {}
 
   std::size_t size() const { return count; }
-  /// Point i: one well-predicted branch, whichever the layout.
-  Point operator[](std::size_t i) const {
-    return xy != nullptr ? Point{xy[2 * i], xy[2 * i + 1]} : points[i];
+
+  /// The points of one ring, indexed from the ring's first: one well-predicted branch a point,
+  /// whichever the layout.
+  struct Ring {
+    const Point* points;
+    const double* xy;
+    Point operator[](std::size_t k) const {
+      return xy != nullptr ? Point{xy[2 * k], xy[2 * k + 1]} : points[k];
+    }
+  };
+  Ring ring(std::size_t r) const {
+    if (xy != nullptr) return {nullptr, xy + 2 * std::size_t{ring_offsets[r]}};
+    return {rings != nullptr ? rings[r].data() : points + ring_offsets[r], nullptr};
   }
+  /// The ring point i lies in: the last one starting at or before it (an empty ring starts
+  /// where the next one does).
+  std::size_t ring_of(std::size_t i) const {
+    return static_cast<std::size_t>(std::upper_bound(ring_offsets.begin(), ring_offsets.end(), i) -
+                                    ring_offsets.begin()) -
+           1;
+  }
+  /// Point i of ring r (i numbered among all the points).
+  Point at(std::size_t r, std::size_t i) const { return ring(r)[i - ring_offsets[r]]; }
 };
 
 /// Triangles as counterclockwise triples of the caller's vertex indices.

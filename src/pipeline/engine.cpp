@@ -144,10 +144,20 @@ bool Engine::found_not_simple() const {
                      [](const Finding& f) { return Diagnostic{f.issue}.is_not_simple(); });
 }
 
-std::span<const Point> Engine::caller_points(const InputPolygon& input) {
+std::span<const Point> Engine::caller_points(const InputPolygon& input, const RunContext& ctx) {
   if (input.points != nullptr) return {input.points, input.size()};
-  caller_points_.resize(input.size());
-  for (std::size_t i = 0; i < input.size(); ++i) caller_points_[i] = input[i];
+  const std::size_t n = input.size();
+  caller_points_.resize(n);
+  const std::size_t tasks = ctx.tasks_for(n, std::size_t{1} << 16);
+  ctx.run_tasks("cdt caller's points", tasks, [&](std::size_t t) {
+    const std::size_t from = n * t / tasks, to = n * (t + 1) / tasks;
+    const auto& offsets = input.ring_offsets;
+    for (std::size_t i = from, r = input.ring_of(from); i < to; ++r) {
+      const InputPolygon::Ring ring = input.ring(r);
+      for (const std::size_t end = std::min<std::size_t>(to, offsets[r + 1]); i < end; ++i)
+        caller_points_[i] = ring[i - offsets[r]];
+    }
+  });
   return caller_points_;
 }
 
@@ -422,7 +432,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
     // partition), 16.7 and 64 million after divide-and-conquer's at 2 and 16.
     RunContext flip_ctx = ctx;
     if (flip_ctx.partitions > 1 && outline.few_long_runs()) flip_ctx.partitions = 1;
-    make_delaunay(caller_points(input), clean_, out, flip_ctx, delaunay, region_ordered_);
+    make_delaunay(caller_points(input, flip_ctx), clean_, out, flip_ctx, delaunay, region_ordered_);
   }
   return status;
 }

@@ -79,8 +79,8 @@ class Engine {
   /// The findings as diagnostics in the caller's numbering, and the status they make.
   Status report(const InputPolygon& input, std::vector<Diagnostic>& diagnostics) const;
   /// The caller's points, for the CDT (which reads them by the caller's index): where they
-  /// are, or copied from interleaved coordinates.
-  std::span<const Point> caller_points(const InputPolygon& input);
+  /// are, or copied (in ctx's tasks) from interleaved coordinates or the rings' arrays.
+  std::span<const Point> caller_points(const InputPolygon& input, const RunContext& ctx);
 
   Workers workers_;  ///< a private executor for Options::threads, kept between runs
   Buffers buffers_;
@@ -100,7 +100,7 @@ class Engine {
   VariantScratchPtr variant_scratch_;  ///< the parallel variants' arrays, made on first use
   std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
-  std::vector<Point> caller_points_;                        ///< caller_points' copy
+  FillVector<Point> caller_points_;                         ///< caller_points' copy
 };
 
 }  // namespace pear::detail

@@ -63,6 +63,12 @@ Status Triangulator::run(const CoordinateView& polygon, const Options& options,
   return run_engine(engine_, polygon, options, triangles, diagnostics, delaunay);
 }
 
+Status Triangulator::run(const detail::RingSpans& polygon, const Options& options,
+                         std::vector<std::array<std::uint32_t, 3>>& triangles,
+                         std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
+  return run_engine(engine_, polygon, options, triangles, diagnostics, delaunay);
+}
+
 EarStatistics Triangulator::run_statistics(const PolygonView& polygon) {
   if (!engine_) engine_ = detail::acquire_engine();
   return engine_->statistics(polygon);

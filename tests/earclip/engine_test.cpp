@@ -4,7 +4,12 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
 
+#include "pear/generate.hpp"
 #include "pear/pear.hpp"
 #include "pear/validate.hpp"
 #include "support.hpp"
@@ -301,6 +306,74 @@ TEST(EngineInput, UserPointTypesWithoutCopying) {
   EXPECT_EQ(triangulate(rings).triangles.size(), 2u);
   const std::vector<std::vector<std::array<double, 2>>> arrays = {{{0, 0}, {2, 0}, {1, 1}}};
   EXPECT_EQ(triangulate(arrays).triangles.size(), 1u);
+}
+
+/// The same result as from the points copied into one array (what every ring range was read as
+/// before): status, triangles and diagnostics alike.
+void expect_as_flat(const Polygon& polygon, const Options& options) {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> offsets{0};
+  for (const Ring& ring : polygon) {
+    points.insert(points.end(), ring.begin(), ring.end());
+    offsets.push_back(static_cast<std::uint32_t>(points.size()));
+  }
+  Triangulator triangulator;
+  Triangulation<> flat;
+  triangulator.triangulate_into(PolygonView{points, offsets}, options, flat);
+  const Triangulation<> rings = triangulator.triangulate(polygon, options);
+  EXPECT_EQ(rings.status, flat.status);
+  EXPECT_EQ(rings.triangles, flat.triangles);
+  ASSERT_EQ(rings.diagnostics.size(), flat.diagnostics.size());
+  for (std::size_t i = 0; i < flat.diagnostics.size(); ++i) {
+    EXPECT_EQ(rings.diagnostics[i].issue, flat.diagnostics[i].issue);
+    EXPECT_EQ(rings.diagnostics[i].ring, flat.diagnostics[i].ring);
+    EXPECT_EQ(rings.diagnostics[i].vertex, flat.diagnostics[i].vertex);
+  }
+  // A vector of spans is read in place too.
+  std::vector<std::span<const Point>> spans(polygon.begin(), polygon.end());
+  EXPECT_EQ(triangulator.triangulate(spans, options).triangles, flat.triangles);
+}
+
+/// pear::Polygon's rings are read where they are (no copy into one array first): dirty rings,
+/// bad ones named by ring and vertex, and a large polygon cleaned in parallel passes and
+/// flipped to its CDT (whose copy of the caller's points then comes from the rings).
+TEST(EngineInput, PolygonRingsAreReadWhereTheyAre) {
+  static_assert(detail::point_array_rings<Polygon>);
+  static_assert(!detail::point_array_rings<std::vector<std::vector<Vec2>>>);
+  Ring closed = square(0, 0, 10);
+  closed.insert(closed.begin() + 2, closed[1]);  // a repeated point
+  closed.push_back(closed.front());              // and the closing one
+  const Ring hole = reversed(square(2, 2, 3)), other = reversed(square(6, 6, 2));
+  Ring nan_hole = other;
+  nan_hole[1].y = std::numeric_limits<double>::quiet_NaN();
+  Ring crossing = other;
+  std::swap(crossing[1], crossing[2]);
+  const std::vector<std::pair<const char*, Polygon>> cases = {
+      {"holes", {closed, hole, other}},
+      {"an empty ring", {closed, {}, hole}},
+      {"a hole of two points", {closed, hole, {{7, 7}, {8, 8}}}},
+      {"NaN in ring 2", {closed, hole, nan_hole}},
+      {"a crossing hole", {closed, crossing}},
+      {"no ring", {}},
+  };
+  for (const auto& [name, polygon] : cases)
+    for (const Options& options :
+         {Options{}, Options{.heuristic = EarHeuristic::fast}, Options{.delaunay = true}}) {
+      SCOPED_TRACE(name);
+      expect_as_flat(polygon, options);
+    }
+  const Polygon large = generate_polygon("random-holes", 40000, 5);
+  for (unsigned threads : {1u, 2u}) {
+    SCOPED_TRACE("threads " + std::to_string(threads));
+    const Options options{.algorithm = Algorithm::partition_and_cut,
+                          .delaunay = true,
+                          .threads = threads,
+                          .partitions = 4};
+    expect_as_flat(large, options);
+    const Triangulation<> cdt = triangulate(large, options);
+    ASSERT_EQ(cdt.status, Status::ok);
+    EXPECT_TRUE(validate(large, cdt.triangles).valid);
+  }
 }
 
 TEST(EngineInput, TriangulatorIsReusable) {

@@ -3,14 +3,17 @@
 // repeated points, closing points, rings and reversals fall on the chunks' borders, at 1, 2 and
 // 4 threads and on one thread with 4 partitions. Inputs it does not handle (a spike, a ring with
 // no area, an empty ring, a coordinate that is not finite) must be handed to the serial pass,
-// with the same result and the same named diagnostics.
+// with the same result and the same named diagnostics. The same whether the points come as
+// one array, as interleaved coordinates or as each ring's own array.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "clean/clean.hpp"
 #include "pear/config.hpp"
@@ -65,13 +68,31 @@ struct Cleaned {
   std::vector<std::string> phases;
 };
 
-Cleaned clean(const Input& input, const RunContext& context, std::size_t in_parts_from) {
+/// How the caller hands the points over: one array, interleaved coordinates, or each ring's
+/// own array (pear::Polygon's rings, read where they are).
+enum class Layout { points, coordinates, rings };
+
+Cleaned clean(const Input& input, const RunContext& context, std::size_t in_parts_from,
+              Layout layout = Layout::points) {
   Cleaned out;
   RunProfile profile;
   RunContext ctx = context;
   ctx.profile = &profile;
-  out.status = clean_polygon(PolygonView{input.points, input.offsets}, out.clean, out.diagnostics,
-                             ctx, in_parts_from);
+  std::vector<double> xy;
+  for (const Point& p : input.points) xy.insert(xy.end(), {p.x, p.y});
+  // Each ring copied to an array of its own, so that no ring follows another in memory.
+  std::vector<std::vector<Point>> rings;
+  std::vector<std::span<const Point>> spans;
+  for (std::size_t r = 0; r + 1 < input.offsets.size(); ++r) {
+    const auto first = input.points.begin() + input.offsets[r];
+    rings.emplace_back(first, input.points.begin() + input.offsets[r + 1]);
+  }
+  for (const auto& ring : rings) spans.emplace_back(ring);
+  const InputPolygon in =
+      layout == Layout::points        ? InputPolygon(PolygonView{input.points, input.offsets})
+      : layout == Layout::coordinates ? InputPolygon(CoordinateView{xy, input.offsets})
+                                      : InputPolygon(RingSpans{spans, input.offsets});
+  out.status = clean_polygon(in, out.clean, out.diagnostics, ctx, in_parts_from);
   for (const auto& phase : profile.phases) out.phases.push_back(phase.name);
   return out;
 }
@@ -112,13 +133,20 @@ void expect_as_serial(const Input& input, bool parts) {
   const Contexts contexts;
   for (const RunContext& ctx : contexts.list) {
     SCOPED_TRACE("partitions " + std::to_string(ctx.partitions));
-    const Cleaned got = clean(input, ctx, 1000);
-    expect_same(got, expected);
-    // A build without threads always cleans serially (the same result).
-    const bool decided_in_parts = PEAR_HAS_THREADS && parts && ctx.partitions > 1;
-    EXPECT_EQ(has(got.phases, "clean"), !decided_in_parts);
-    if (decided_in_parts) {
-      EXPECT_TRUE(has(got.phases, "clean: copy"));
+    // The same from interleaved coordinates and from each ring's own array, whose chunks start
+    // inside rings and at their borders alike.
+    for (Layout layout : {Layout::points, Layout::coordinates, Layout::rings}) {
+      SCOPED_TRACE(layout == Layout::rings         ? "rings' arrays"
+                   : layout == Layout::coordinates ? "coordinates"
+                                                   : "points");
+      const Cleaned got = clean(input, ctx, 1000, layout);
+      expect_same(got, expected);
+      // A build without threads always cleans serially (the same result).
+      const bool decided_in_parts = PEAR_HAS_THREADS && parts && ctx.partitions > 1;
+      EXPECT_EQ(has(got.phases, "clean"), !decided_in_parts);
+      if (decided_in_parts) {
+        EXPECT_TRUE(has(got.phases, "clean: copy"));
+      }
     }
   }
 }
