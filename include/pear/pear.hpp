@@ -202,8 +202,9 @@ Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}
 }
 
 /// Frees the engines (every stage's arrays) that calls keep for the next ones: up to 64 sized
-/// for small polygons, and the one a call on a polygon of more than 65,536 vertices left, which
-/// holds about 300 bytes a vertex of that polygon until this is called or the program ends.
+/// for small polygons, and the one a call on a polygon of more than about 21,800 vertices left
+/// (buffers for more than 65,536 points), which holds about 300 bytes a vertex of that polygon
+/// until this is called or the program ends.
 /// Triangulators in use keep theirs. Thread-safe.
 PEAR_API void release_cached_engines() noexcept;
 

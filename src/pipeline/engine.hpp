@@ -39,6 +39,9 @@ class Engine {
   Buffers& buffers() { return buffers_; }
   /// Vertices the buffers were last sized for: what keeping this engine costs.
   std::size_t footprint() const { return clean_.points.capacity() + boundary_.pos.capacity(); }
+  /// The least footprint a run on a polygon of `vertices` leaves: its clean points and the
+  /// boundary's room for two nodes a bridge (bridge_holes reserves it).
+  static std::size_t footprint_after(std::size_t vertices) { return 3 * vertices; }
   Workers& workers() { return workers_; }
 
  private:

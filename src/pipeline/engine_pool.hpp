@@ -9,7 +9,8 @@
 namespace pear::detail {
 
 /// An engine from the pool, or a new one. `vertices`, the polygon's size where it is known:
-/// a large polygon takes the pool's large engine first, a small one never takes it.
+/// a polygon whose run leaves a large engine (Engine::footprint_after) takes the pool's large
+/// engine first, a small one never takes it.
 std::unique_ptr<Engine> acquire_engine(std::size_t vertices = 0);
 /// Back to the pool: up to 64 engines sized for small polygons, and the last engine sized for a
 /// large one (without it, pear::triangulate on large polygons one after another built and freed

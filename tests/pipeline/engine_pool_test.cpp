@@ -45,6 +45,21 @@ TEST(EnginePool, KeepsTheLastLargeEngineForLargePolygonsOnly) {
   release_engine(std::move(fresh));
 }
 
+/// A polygon below 65,536 vertices whose run still leaves a large engine (each vertex also
+/// has room for the bridges' nodes) takes the kept one: it built a new engine at every call.
+TEST(EnginePool, APolygonThatLeavesALargeEngineTakesTheKeptOne) {
+  release_pooled_engines();
+  constexpr std::size_t vertices = 30000;
+  std::unique_ptr<Engine> used = engine_sized_for(vertices);
+  ASSERT_GT(used->footprint(), std::size_t{1} << 16);
+  const Engine* kept = used.get();
+  release_engine(std::move(used));
+  std::unique_ptr<Engine> again = acquire_engine(vertices);
+  EXPECT_EQ(again.get(), kept);
+  release_engine(std::move(again));
+  EXPECT_NE(acquire_engine(1000).get(), kept);  // a small polygon never takes it
+}
+
 TEST(EnginePool, ReleaseFreesEveryKeptEngine) {
   release_engine(engine_sized_for(large_vertices));
   release_engine(engine_sized_for(1000));
