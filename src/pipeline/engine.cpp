@@ -148,7 +148,7 @@ std::span<const Point> Engine::caller_points(const InputPolygon& input, const Ru
   if (input.points != nullptr) return {input.points, input.size()};
   const std::size_t n = input.size();
   caller_points_.resize(n);
-  const std::size_t tasks = ctx.tasks_for(n, std::size_t{1} << 16);
+  const std::size_t tasks = ctx.tasks_for(n, std::size_t{1} << 14);
   ctx.run_tasks("cdt caller's points", tasks, [&](std::size_t t) {
     const std::size_t from = n * t / tasks, to = n * (t + 1) / tasks;
     const auto& offsets = input.ring_offsets;
