@@ -119,6 +119,9 @@ class ReflexGrid {
   /// the row's band (plus one on each side for rounding), and only cells that hold nodes; none
   /// once every node has left (what is left of a comb is a strip whose ears span it: each
   /// walked every row of the grid's empty cells).
+  /// The nodes in the grid.
+  std::size_t live() const { return live_; }
+
   template <class Visit>
   bool any_near_triangle(const Point& a, const Point& b, const Point& c, Visit&& visit) const {
     if (live_ == 0) return false;

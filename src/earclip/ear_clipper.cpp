@@ -2,6 +2,7 @@
 
 #include "core/ear_test.hpp"
 #include "core/pinches.hpp"
+#include "core/strip_fans.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -39,6 +40,8 @@ void EarClipper::classify(std::uint32_t entry, SharedPositions shared) {
   }
   grid_.build(b, scratch_);
   grid_built_ = true;
+  strip_check_at_ = SIZE_MAX;
+  strips_ = 0;
 }
 
 /// A node that shares its position with one of another cycle, or one that a spike took away,
@@ -135,6 +138,31 @@ void EarClipper::clip(std::uint32_t v) {
   remove(v);
 }
 
+/// Where no reflex node is left on a long cycle (a comb once its teeth are gone: tens of
+/// thousands of nodes on a line, whose ears come one at a time, each spanning the strip: half
+/// the comb's clip), the cycle may be a strip: two fans finish it (core/strip_fans.hpp).
+/// Looked at again only once half its nodes have gone, so a long cycle that is none costs O(n)
+/// in all. Returns whether it finished the cycle.
+bool EarClipper::finish_strip() {
+  if (grid_.live() != 0 || remaining_ < min_strip_nodes || remaining_ > strip_check_at_ ||
+      pinch_.size() < b_->size())
+    return false;
+  strip_check_at_ = remaining_ / 2;
+  scratch_.clear();
+  std::uint32_t v = anchor_;
+  do {
+    scratch_.push_back(v);
+    v = b_->next[v];
+  } while (v != anchor_ && scratch_.size() <= remaining_);
+  if (scratch_.size() != remaining_ ||
+      !finish_strip_in_fans(*b_, scratch_, pinch_, RunContext{}, *out_))
+    return false;
+  for (std::uint32_t u : scratch_) alive_[u] = 0;
+  remaining_ = 0;
+  ++strips_;
+  return true;
+}
+
 /// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
 void EarClipper::update_neighbour(std::uint32_t v) {
   if (reflex_[v] && !pinch_[v] && b_->turn(v) >= 0) drop_reflex(v);
@@ -185,6 +213,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
       clip(v);
       const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
       last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
+      finish_strip();
     }
     finish(anchor_);
     if (pending_.empty()) return;
@@ -193,6 +222,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
     pending_.pop_back();
     remaining_ = part.nodes;
     anchor_ = part.entry;
+    strip_check_at_ = SIZE_MAX;
     last = part.entry;
     v = part.entry;
     do {
@@ -308,6 +338,7 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
       up_next = n_left;
       if (p_left != UINT32_MAX) walk_.push_back(p_left);
       recheck = false;
+      finish_strip();
     }
     finish(anchor_);
     if (pending_.empty()) return true;
@@ -315,6 +346,7 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
     pending_.pop_back();
     remaining_ = part.nodes;
     anchor_ = part.entry;
+    strip_check_at_ = SIZE_MAX;
   }
 }
 

@@ -54,6 +54,9 @@ class EarClipper final : public CycleClipper {
     return 64 * nodes + std::min<std::size_t>(4'000'000, 4096 * nodes);
   }
 
+  /// The strips (core/strip_fans.hpp) the last run finished in two fans.
+  std::size_t strips() const { return strips_; }
+
   /// The caller's index of the vertex where the first best-effort fallback acted.
   std::uint32_t best_effort_vertex() const override { return best_effort_vertex_; }
 
@@ -95,6 +98,7 @@ class EarClipper final : public CycleClipper {
   void clip_ears(std::uint32_t entry);
 
   bool walk_ears(std::uint32_t& entry);
+  bool finish_strip();
   void enqueue_cycle(std::uint32_t entry);
 
   Boundary* b_ = nullptr;
@@ -123,6 +127,9 @@ class EarClipper final : public CycleClipper {
     std::size_t nodes;
   };
   std::vector<PendingCycle> pending_;  ///< parts of split cycles still to clip
+  /// finish_strip looks at the cycle again only at or below this many nodes.
+  std::size_t strip_check_at_ = SIZE_MAX;
+  std::size_t strips_ = 0;
   EarQueue queue_;
   ReflexGrid grid_;
   bool grid_built_ = false;  ///< spikes are dissolved before the grid exists

@@ -7,12 +7,12 @@
 //      writer, and each triangle belongs to its base node's chunk;
 //   3. update: each chunk re-classifies the neighbours of its clipped nodes.
 // Rounds go on while they clip enough; then the landmarks that are ears are clipped, a strip
-// (what is left of a comb) is fanned in tasks (fan_finish.hpp), and the sequential engine
+// (what is left of a comb) is fanned in tasks (core/strip_fans.hpp), and the sequential engine
 // finishes anything else.
 #include <algorithm>
 
 #include "core/ear_test.hpp"
-#include "fan_finish.hpp"
+#include "core/strip_fans.hpp"
 #include "variant_scratch.hpp"
 #include "variants.hpp"
 

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -308,6 +309,48 @@ TEST(Strategies, MisplacedAndCrowdedHoles) {
   ASSERT_EQ(result.status, Status::ok);
   EXPECT_EQ(result.triangles.size(), 16u + 2 * 4 - 2);  // n + 2h - 2
   EXPECT_TRUE(validate(crowded, result.triangles).valid);
+}
+
+/// The queue and `fast`'s walk, once no reflex node is left on a long cycle, finish a strip
+/// (what a comb becomes once its teeth are clipped) in two fans (core/strip_fans.hpp) instead
+/// of an ear at a time: valid, n - 2 triangles, half of them joining two feet to one of the
+/// comb's two bottom corners. A comb too short for fans, and a long polygon that never becomes a
+/// strip (a 20,000-gon: no reflex node from the start), are clipped ear by ear.
+TEST(Strips, TheQueueAndTheWalkFinishAStripInFans) {
+  struct Case {
+    const char* name;
+    Polygon polygon;
+    std::size_t strips;
+  };
+  Ring circle;
+  for (int i = 0; i < 20000; ++i)
+    circle.push_back({std::cos(i * 2 * M_PI / 20000), std::sin(i * 2 * M_PI / 20000)});
+  const Case cases[] = {
+      {"comb of 20,000", generate_polygon("comb", 20000), 1},
+      {"comb of 4,000", generate_polygon("comb", 4000), 0},
+      {"20,000-gon", {circle}, 0},
+  };
+  for (const Case& c : cases)
+    for (EarHeuristic h : {EarHeuristic::top, EarHeuristic::fast}) {
+      SCOPED_TRACE(std::string(c.name) + (h == EarHeuristic::top ? ", top" : ", fast"));
+      const CleanPolygon clean = cleaned(c.polygon);
+      Boundary b = testing::rings_as_cycles(clean);
+      EarClipper clipper;
+      TriangleList triangles;
+      ASSERT_TRUE(clipper.run_queue(b, 0, h, triangles));
+      EXPECT_EQ(clipper.strips(), c.strips);
+      ASSERT_EQ(triangles.size(), clean.points.size() - 2);
+      EXPECT_TRUE(validate(c.polygon, triangles).valid);
+      if (c.strips == 0) continue;
+      // The comb's ring starts with its bottom corners (0, 0) and (right, 0); the strip is the
+      // teeth's feet (y = 1), every one of its triangles two feet and one of those corners.
+      std::size_t strip_triangles = 0;
+      for (const auto& t : triangles) {
+        const auto y = [&](std::uint32_t k) { return c.polygon[0][t[k]].y; };
+        strip_triangles += std::min({t[0], t[1], t[2]}) <= 1u && y(0) + y(1) + y(2) == 2.0;
+      }
+      EXPECT_GE(strip_triangles, clean.points.size() / 2 - 4);
+    }
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include "fan_finish.hpp"
+#include "strip_fans.hpp"
 
 #include <algorithm>
 #include <vector>
@@ -6,7 +6,6 @@
 #include "core/ear_test.hpp"
 #include "geometry/segments.hpp"
 #include "pear/predicates.hpp"
-#include "shared_boundary.hpp"
 
 namespace pear::detail {
 namespace {
@@ -16,6 +15,11 @@ constexpr std::size_t max_bends = 4;
 
 /// Places of the cycle a task of its passes takes.
 constexpr std::size_t places_per_task = 4096;
+
+/// Where part i of `parts` equal parts of `count` places starts.
+std::size_t part_begin(std::size_t count, std::size_t parts, std::size_t i) {
+  return count * i / parts;
+}
 
 /// The places in `order` of the nodes that are not exactly between their neighbours on one
 /// line (or lie where another node does), in order; more than max_bends: none.

@@ -1,4 +1,4 @@
-// finish_strip_in_fans (src/parallel/fan_finish.cpp), an internal: on strips (a straight run and
+// finish_strip_in_fans (src/core/strip_fans.cpp), an internal: on strips (a straight run and
 // one or two nodes across from it) the fans are a valid triangulation (pear's validator: exact
 // area, every edge), each run edge's triangle has the nearer of the two apexes, and the result
 // is the same at every thread and partition count; every other cycle is left alone.
@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <numeric>
 
-#include "parallel/fan_finish.hpp"
+#include "core/strip_fans.hpp"
 #include "pear/validate.hpp"
 #include "run_contexts.hpp"
 

@@ -1,8 +1,9 @@
-// What mark-and-cut leaves of a comb: a strip between the teeth's feet, tens of thousands of
-// nodes on a line, and the one or two nodes across from them. Its ears come one at a time (each
-// spans the strip), so the rounds stop and the sequential engine clipped them all: 2.6 of the
-// comb's 3.5 ms at 16 partitions. Every triangle there joins two neighbours on the line to one
-// of the nodes across, so the triangulation is two fans; they are written in tasks instead.
+// What a comb becomes once its teeth are clipped: a strip between the teeth's feet, tens of
+// thousands of nodes on a line, and the one or two nodes across from them. Its ears come one at
+// a time (each spans the strip): mark-and-cut's rounds stop there (2.6 of the comb's 3.5 ms at
+// 16 partitions went to the sequential engine clipping it), and the sequential engine spent
+// half its clip on it. Every triangle there joins two neighbours on the line to one of the
+// nodes across, so the triangulation is two fans; both write them instead (in ctx's tasks).
 #pragma once
 
 #include <cstdint>
