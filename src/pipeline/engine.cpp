@@ -327,6 +327,21 @@ Engine::Finding Engine::why_not_valid(bool checked, std::uint32_t vertex) const 
   return {Issue::not_simple, vertex};
 }
 
+/// The cycle of boundary_ through `entry` into part_ (linked as a cycle from node 0), unless it
+/// has more than `most` nodes (then part_ holds its first ones, and false is returned).
+[[gnu::noinline]] bool Engine::copy_cycle(std::uint32_t entry, std::size_t most) {
+  part_.clear();
+  std::uint32_t v = entry;
+  do {
+    if (part_.size() >= most) return false;
+    part_.add(boundary_.pos[v], boundary_.vertex[v]);
+    v = boundary_.next[v];
+  } while (v != entry);
+  for (std::uint32_t i = 0; i + 1 < part_.size(); ++i) part_.link(i, i + 1);
+  part_.link(part_.size() - 1, 0);
+  return true;
+}
+
 bool Engine::clip(Algorithm algorithm, const Options& options, const RunContext& ctx,
                   TriangleList& out, std::uint32_t& best_effort_vertex) {
   if (cycles_.empty()) return true;
@@ -334,14 +349,7 @@ bool Engine::clip(Algorithm algorithm, const Options& options, const RunContext&
   // Regions that touch the rest only at points (see touching.hpp): small, copied out so that
   // each costs its own size, clipped sequentially.
   for (std::size_t c = 1; c < cycles_.size(); ++c) {
-    part_.clear();
-    std::uint32_t v = cycles_[c];
-    do {
-      part_.add(boundary_.pos[v], boundary_.vertex[v]);
-      v = boundary_.next[v];
-    } while (v != cycles_[c]);
-    for (std::uint32_t i = 0; i + 1 < part_.size(); ++i) part_.link(i, i + 1);
-    part_.link(part_.size() - 1, 0);
+    copy_cycle(cycles_[c], boundary_.size());
     if (!clipper_.run(part_, 0, options.heuristic, out) && complete) {
       complete = false;
       best_effort_vertex = clipper_.best_effort_vertex();
@@ -378,7 +386,16 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
   if (rest == no_node) return true;
   bool complete = true;
   ctx.run_serial("clip sequentially", [&] {
-    complete = clipper_.run(boundary_, rest, options.heuristic, out, shared_);
+    // What the parallel variants leave is often a cycle of a few hundred nodes on a boundary
+    // of hundreds of thousands, whose arrays the clipper would size and scan (0.1-0.5 ms on
+    // the coasts at 16 partitions, serial): copied out, it costs its own size, and the bit
+    // sets take it up to their limit. Its nodes that share a position are hashed there (as in
+    // the touching regions' copies below); where they share one with a node off the cycle, no
+    // ear test of the cycle is touched.
+    if (rest != entry && copy_cycle(rest, boundary_.size() / 4))
+      complete = clipper_.run(part_, 0, options.heuristic, out);
+    else
+      complete = clipper_.run(boundary_, rest, options.heuristic, out, shared_);
   });
   best_effort_vertex = clipper_.best_effort_vertex();
   return complete;

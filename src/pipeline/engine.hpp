@@ -70,6 +70,7 @@ class Engine {
   bool clip(Algorithm algorithm, const Options& options, const RunContext& ctx, TriangleList& out,
             std::uint32_t& best_effort_vertex);
   /// The algorithm on the first cycle, the sequential engine on what it leaves.
+  bool copy_cycle(std::uint32_t entry, std::size_t most);
   bool clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                  TriangleList& out, std::uint32_t& best_effort_vertex);
   /// A misplaced hole, if the check passed (rings meet only at shared vertices), else
@@ -98,7 +99,7 @@ class Engine {
   std::vector<std::uint8_t> bridge_ends_;  ///< shared_'s marks where no rings touch
   std::vector<std::uint32_t> cycles_;      ///< one node per region to clip, the main one first
   std::size_t region_ordered_ = 0;  ///< first triangles clipped region by region (for the CDT)
-  Boundary part_;                   ///< a region copied out of boundary_
+  Boundary part_;                   ///< a region copied out of boundary_ (copy_cycle)
   EarClipper clipper_;
   VariantScratchPtr variant_scratch_;  ///< the parallel variants' arrays, made on first use
   std::vector<Finding> findings_;
