@@ -392,7 +392,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
     // sets take it up to their limit. Its nodes that share a position are hashed there (as in
     // the touching regions' copies below); where they share one with a node off the cycle, no
     // ear test of the cycle is touched.
-    if (rest != entry && copy_cycle(rest, boundary_.size() / 4))
+    if (algorithm != Algorithm::sequential && copy_cycle(rest, boundary_.size() / 4))
       complete = clipper_.run(part_, 0, options.heuristic, out);
     else
       complete = clipper_.run(boundary_, rest, options.heuristic, out, shared_);
