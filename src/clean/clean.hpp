@@ -13,8 +13,9 @@ namespace pear::detail {
 /// that is not that case is cleaned again serially, which names what it finds. The same result
 /// either way.
 inline constexpr std::size_t clean_in_parts_from = std::size_t{1} << 15;
-/// A parallel pass's share of the points (or corners) of the input or of a ring.
-inline constexpr std::size_t clean_chunk = std::size_t{1} << 13;
+/// A parallel pass's share of the points (or corners) of the input or of a ring (at 8,192 a
+/// polygon of 50,000 points made 7 tasks, fewer than 16 partitions).
+inline constexpr std::size_t clean_chunk = std::size_t{1} << 12;
 
 /// Checks the input and fills `out`. Returns Status::invalid_input (with an error diagnostic
 /// naming ring and vertex) when nothing can be triangulated; warnings are appended too.

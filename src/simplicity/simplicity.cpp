@@ -517,7 +517,7 @@ void SimplicityCheck::count_run_pairs(const RunContext& ctx) {
         std::partition_point(first, last, [end](const Chain& c) { return c.x0 <= end; });
     return static_cast<std::size_t>(after - chains_.begin()) - i - 1;
   };
-  const std::size_t tasks = ctx.tasks_for(runs, 1024);
+  const std::size_t tasks = ctx.tasks_for(runs, 256);  // a few binary searches a run
   ctx.run_tasks("check simplicity: pair counts", tasks, [&](std::size_t t) {
     for (std::size_t i = runs * t / tasks; i < runs * (t + 1) / tasks; ++i)
       pairs_before_[i + 1] = pairs_of(i);
