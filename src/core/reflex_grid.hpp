@@ -114,14 +114,14 @@ class ReflexGrid {
       if (inside(e.pos)) visit(e);
   }
 
+  /// The nodes in the grid.
+  std::size_t live() const { return live_; }
+
   /// Calls visit(entry) for every node in a cell that triangle (a, b, c) may touch, until visit
   /// returns true; returns whether it did. Per row, only the columns the triangle spans within
   /// the row's band (plus one on each side for rounding), and only cells that hold nodes; none
   /// once every node has left (what is left of a comb is a strip whose ears span it: each
   /// walked every row of the grid's empty cells).
-  /// The nodes in the grid.
-  std::size_t live() const { return live_; }
-
   template <class Visit>
   bool any_near_triangle(const Point& a, const Point& b, const Point& c, Visit&& visit) const {
     if (live_ == 0) return false;

@@ -69,8 +69,9 @@ class Engine {
   /// Clips every cycle with `algorithm`; false when a best-effort fallback acted.
   bool clip(Algorithm algorithm, const Options& options, const RunContext& ctx, TriangleList& out,
             std::uint32_t& best_effort_vertex);
-  /// The algorithm on the first cycle, the sequential engine on what it leaves.
+  /// The cycle through `entry` into part_, unless it has more than `most` nodes.
   bool copy_cycle(std::uint32_t entry, std::size_t most);
+  /// The algorithm on the first cycle, the sequential engine on what it leaves.
   bool clip_main(Algorithm algorithm, const Options& options, const RunContext& ctx,
                  TriangleList& out, std::uint32_t& best_effort_vertex);
   /// A misplaced hole, if the check passed (rings meet only at shared vertices), else
