@@ -109,24 +109,31 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
   edges_.points = &polygon.points;
   edges_.next.resize(n);
   edges_.boxes.resize(n);
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
-    for (std::uint32_t i = first; i < last; ++i) edges_.next[i] = i + 1;
-    edges_.next[last] = first;
-  }
-  const std::size_t chunk = 1 << 16, chunks = (n + chunk - 1) / chunk;
-  std::vector<EdgeBox> bounds(chunks);
-  ctx.run_tasks("check simplicity: edge boxes", chunks, [&](std::size_t i) {
-    const auto& pts = polygon.points;
-    const std::size_t end = std::min<std::size_t>(n, (i + 1) * chunk);
-    EdgeBox all = {pts[i * chunk].x, pts[i * chunk].y, pts[i * chunk].x, pts[i * chunk].y};
-    for (std::size_t e = i * chunk; e < end; ++e) {
-      const Point &a = pts[e], &b = pts[edges_.next[e]];
-      edges_.boxes[e] = edge_box(a, b);
+  // Every edge as if it led to the next point, in tasks (in chunks of 65,536 and linked on one
+  // thread, a polygon of 100,000 points made two tasks and a serial pass: at 16 partitions 0.1
+  // ms where a sixteenth of the work was 0.01); then each ring's last edge, back to its first.
+  // The bounds need no correction: an edge from a ring's last point to the next ring's first
+  // lies in the box of all points, which the true edges' boxes span.
+  const auto& pts = polygon.points;
+  if (n == 0) return;
+  const std::size_t tasks = ctx.tasks_for(n, 4096);
+  std::vector<EdgeBox> bounds(tasks);
+  ctx.run_tasks("check simplicity: edge boxes", tasks, [&](std::size_t t) {
+    const std::size_t begin = n * t / tasks, end = n * (t + 1) / tasks;
+    EdgeBox all = {pts[begin].x, pts[begin].y, pts[begin].x, pts[begin].y};
+    for (std::size_t e = begin; e < end; ++e) {
+      const std::size_t to = e + 1 < n ? e + 1 : e;
+      edges_.next[e] = static_cast<std::uint32_t>(to);
+      edges_.boxes[e] = edge_box(pts[e], pts[to]);
       all = merged(all, edges_.boxes[e]);
     }
-    bounds[i] = all;
+    bounds[t] = all;
   });
+  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
+    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
+    edges_.next[last] = first;
+    edges_.boxes[last] = edge_box(pts[last], pts[first]);
+  }
   edges_.bounds = bounds[0];
   for (const EdgeBox& b : bounds) edges_.bounds = merged(edges_.bounds, b);
 }
