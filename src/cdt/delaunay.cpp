@@ -69,8 +69,10 @@ void copy_in_tasks(const TriangleList& from, TriangleList& to, const RunContext&
   to.resize(from.size());
   const std::size_t tasks = ctx.tasks_for(from.size(), std::size_t{1} << 16);
   ctx.run_tasks("cdt clip's triangles", tasks, [&](std::size_t t) {
-    const auto first = from.begin() + static_cast<std::ptrdiff_t>(from.size() * t / tasks);
-    const auto last = from.begin() + static_cast<std::ptrdiff_t>(from.size() * (t + 1) / tasks);
+    const auto first =
+        from.begin() + static_cast<std::ptrdiff_t>(part_begin(from.size(), tasks, t));
+    const auto last =
+        from.begin() + static_cast<std::ptrdiff_t>(part_begin(from.size(), tasks, t + 1));
     std::copy(first, last, to.begin() + (first - from.begin()));
   });
 }

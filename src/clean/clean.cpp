@@ -233,8 +233,9 @@ void dissolve_spikes(CleanPolygon& out, std::size_t first, std::size_t ring, con
 bool fewer_than_3_points(const InputPolygon& in, std::size_t ring) {
   Point seen[2];
   std::size_t distinct = 0;
-  for (std::uint32_t i = in.ring_offsets[ring]; i < in.ring_offsets[ring + 1]; ++i) {
-    const Point p = in.at(ring, i);
+  const InputPolygon::Ring points = in.ring(ring);
+  for (std::uint32_t k = 0; k < in.ring_offsets[ring + 1] - in.ring_offsets[ring]; ++k) {
+    const Point p = points[k];
     if ((distinct > 0 && seen[0] == p) || (distinct > 1 && seen[1] == p)) continue;
     if (distinct == 2) return false;
     seen[distinct++] = p;

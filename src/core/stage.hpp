@@ -146,4 +146,11 @@ struct RunContext {
   }
 };
 
+/// Splits [0, count) into `parts` ranges of nearly equal size: part i is
+/// [count * i / parts, count * (i + 1) / parts), the product in 64 bits (size_t has 32 on
+/// wasm32).
+inline std::size_t part_begin(std::size_t count, std::size_t parts, std::size_t i) {
+  return static_cast<std::size_t>(std::uint64_t{count} * i / parts);
+}
+
 }  // namespace pear::detail

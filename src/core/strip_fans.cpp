@@ -16,11 +16,6 @@ constexpr std::size_t max_bends = 4;
 /// Places of the cycle a task of its passes takes.
 constexpr std::size_t places_per_task = 4096;
 
-/// Where part i of `parts` equal parts of `count` places starts.
-std::size_t part_begin(std::size_t count, std::size_t parts, std::size_t i) {
-  return count * i / parts;
-}
-
 /// The places in `order` of the nodes that are not exactly between their neighbours on one
 /// line (or lie where another node does), in order; more than max_bends: none.
 std::vector<std::size_t> bends(const Boundary& b, std::span<const std::uint32_t> order,

@@ -6,7 +6,6 @@
 #include "core/sort_in_parts.hpp"
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
-#include "shared_boundary.hpp"  // part_begin
 
 namespace pear::detail {
 namespace {

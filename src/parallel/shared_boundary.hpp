@@ -70,10 +70,4 @@ struct SharedBoundary {
   void walk_node_by_node(std::uint32_t entry);
 };
 
-/// Splits [0, count) into `parts` ranges of nearly equal size: part i is
-/// [count * i / parts, count * (i + 1) / parts).
-inline std::size_t part_begin(std::size_t count, std::size_t parts, std::size_t i) {
-  return count * i / parts;
-}
-
 }  // namespace pear::detail

@@ -150,9 +150,7 @@ std::span<const Point> Engine::caller_points(const InputPolygon& input, const Ru
   caller_points_.resize(n);
   const std::size_t tasks = ctx.tasks_for(n, std::size_t{1} << 14);
   ctx.run_tasks("cdt caller's points", tasks, [&](std::size_t t) {
-    // In 64 bits: size_t has 32 on wasm32.
-    const auto from = static_cast<std::size_t>(std::uint64_t{n} * t / tasks);
-    const auto to = static_cast<std::size_t>(std::uint64_t{n} * (t + 1) / tasks);
+    const std::size_t from = part_begin(n, tasks, t), to = part_begin(n, tasks, t + 1);
     const auto& offsets = input.ring_offsets;
     for (std::size_t i = from, r = input.ring_of(from); i < to; ++r) {
       const InputPolygon::Ring ring = input.ring(r);

@@ -119,8 +119,7 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
   const std::size_t tasks = ctx.tasks_for(n, 4096);
   std::vector<EdgeBox> bounds(tasks);
   ctx.run_tasks("check simplicity: edge boxes", tasks, [&](std::size_t t) {
-    const auto begin = static_cast<std::size_t>(std::uint64_t{n} * t / tasks);
-    const auto end = static_cast<std::size_t>(std::uint64_t{n} * (t + 1) / tasks);
+    const std::size_t begin = part_begin(n, tasks, t), end = part_begin(n, tasks, t + 1);
     EdgeBox all = {pts[begin].x, pts[begin].y, pts[begin].x, pts[begin].y};
     for (std::size_t e = begin; e < end; ++e) {
       const std::size_t to = e + 1 < n ? e + 1 : e;

@@ -133,8 +133,8 @@ std::vector<std::vector<std::uint32_t>> slab_edges(const RingEdges& edges, std::
   std::vector<std::vector<std::vector<std::uint32_t>>> parts(
       chunks, std::vector<std::vector<std::uint32_t>>(slabs));
   ctx.run_tasks("check simplicity: slab lists", chunks, [&](std::size_t c) {
-    const auto end = static_cast<std::uint32_t>(std::uint64_t{n} * (c + 1) / chunks);
-    for (auto e = static_cast<std::uint32_t>(std::uint64_t{n} * c / chunks); e < end; ++e)
+    const auto end = static_cast<std::uint32_t>(part_begin(n, chunks, c + 1));
+    for (auto e = static_cast<std::uint32_t>(part_begin(n, chunks, c)); e < end; ++e)
       for (std::size_t s = slab_of(edges.boxes[e].x0); s <= slab_of(edges.boxes[e].x1); ++s)
         parts[c][s].push_back(e);
   });
