@@ -204,7 +204,8 @@ Triangulation<Index> triangulate(const Rings& rings, const Options& options = {}
 /// Frees the engines (every stage's arrays) that calls keep for the next ones: up to 64 sized
 /// for small polygons, and the one a call on a polygon of more than about 21,800 vertices left
 /// (buffers for more than 65,536 points), which holds about 300 bytes a vertex of that polygon
-/// until this is called or the program ends.
+/// (400 once it has made a constrained Delaunay triangulation) until this is called or the
+/// program ends.
 /// Triangulators in use keep theirs. Thread-safe.
 PEAR_API void release_cached_engines() noexcept;
 

@@ -24,10 +24,8 @@ constexpr std::size_t thin_round = 16;
 
 /// Which triangles this round's picked flips use (own) or update a twin in (touched).
 struct RoundMarks {
-  /// Round numbers, per triangle (own, touched) and per half-edge (listed): allocated without
-  /// a value, so that tasks clear them (a vector's zeroing pass took Eurasia's 16-thread CDT
-  /// 12 ms on one thread).
-  std::unique_ptr<std::uint32_t[]> own, touched, listed;
+  /// Round numbers, per triangle (own, touched) and per half-edge (listed): BorderFlipMarks'.
+  std::uint32_t *own = nullptr, *touched = nullptr, *listed = nullptr;
   std::uint32_t round = 0;
   std::vector<std::uint8_t> needs;             ///< per suspect: must be flipped
   std::vector<std::uint32_t> picked, waiting;  ///< flipped this round, and left for the next
@@ -269,7 +267,7 @@ namespace {
 /// Lawson's loop over the suspects left by a thin round, on this thread; `queued` all clear
 /// (zeroing a fresh one here was 1.2-1.4 ms of Eurasia's 10 ms tail at 16 sets), and so left.
 std::size_t flip_rest_sequentially(Mesh& mesh, std::vector<std::uint32_t>& suspects,
-                                   std::vector<std::uint8_t>& queued, const RunContext& ctx,
+                                   std::span<std::uint8_t> queued, const RunContext& ctx,
                                    std::size_t budget) {
   std::size_t flips = 0;
   ctx.run_serial("cdt border rounds: Lawson", [&] {
@@ -289,17 +287,21 @@ std::size_t flip_rest_sequentially(Mesh& mesh, std::vector<std::uint32_t>& suspe
 }  // namespace
 
 std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
-                         std::vector<std::uint8_t>& queued, const RunContext& ctx,
-                         std::size_t budget) {
+                         std::span<std::uint8_t> queued, BorderFlipMarks& kept,
+                         const RunContext& ctx, std::size_t budget) {
   RoundMarks marks;
   const std::size_t triangles = mesh.triangles->size(), halves = mesh.twin.size();
-  marks.own.reset(new std::uint32_t[triangles]);
-  marks.touched.reset(new std::uint32_t[triangles]);
-  marks.listed.reset(new std::uint32_t[halves]);
+  // Emptied first, so that growing copies nothing; the tasks below write every entry.
+  for (FillVector<std::uint32_t>* v : {&kept.own, &kept.touched, &kept.listed}) v->clear();
+  kept.own.resize(triangles);
+  kept.touched.resize(triangles);
+  kept.listed.resize(halves);
+  marks.own = kept.own.data(), marks.touched = kept.touched.data();
+  marks.listed = kept.listed.data();
   const std::size_t tasks = std::max<std::size_t>(1, halves >> 16);
   ctx.run_tasks("cdt border rounds: marks", tasks, [&](std::size_t t) {
-    const auto clear = [&](const std::unique_ptr<std::uint32_t[]>& marks_of, std::size_t n) {
-      std::fill(marks_of.get() + n * t / tasks, marks_of.get() + n * (t + 1) / tasks, 0u);
+    const auto clear = [&](std::uint32_t* marks_of, std::size_t n) {
+      std::fill(marks_of + n * t / tasks, marks_of + n * (t + 1) / tasks, 0u);
     };
     clear(marks.own, triangles);
     clear(marks.touched, triangles);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/stage.hpp"
@@ -24,6 +25,13 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
                                           const std::vector<std::vector<std::uint32_t>>& sets,
                                           const RunContext& ctx);
 
+/// flip_borders' round numbers per triangle (own, touched) and per half-edge (listed), kept with
+/// the CDT's other arrays between runs: cleared by tasks, never zeroed or freed on the calling
+/// thread (a vector's zeroing pass took Eurasia's 16-thread CDT 12 ms on one thread).
+struct BorderFlipMarks {
+  FillVector<std::uint32_t> own, touched, listed;
+};
+
 /// Flips until every edge is locally Delaunay, given that only the `suspects` may not be, in
 /// rounds: test all suspects (in parallel), pick in list order those whose flips touch disjoint
 /// triangles, flip them (in parallel), and make their outer edges and the suspects left over the
@@ -31,7 +39,7 @@ std::vector<std::uint32_t> relink_borders(Mesh& mesh,
 /// timing or on whether a round ran in parallel. Returns the flip count (at most `budget`).
 /// `queued`: a flag per half-edge, all clear (the sets' flips leave theirs so), and so left.
 std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
-                         std::vector<std::uint8_t>& queued, const RunContext& ctx,
-                         std::size_t budget);
+                         std::span<std::uint8_t> queued, BorderFlipMarks& kept,
+                         const RunContext& ctx, std::size_t budget);
 
 }  // namespace pear::detail

@@ -13,6 +13,19 @@
 #include "pear/config.hpp"
 
 namespace pear::detail {
+
+struct DelaunayScratch {
+  Mesh mesh;
+  TrianglePartition partition;
+  FillVector<std::uint8_t> queued;  ///< a flag per half-edge: on the flip loops' stacks
+  TriangleList clipped;             ///< the triangles before the flips in sets
+  BorderFlipMarks border_marks;
+};
+
+void DelaunayScratchDeleter::operator()(DelaunayScratch* scratch) const noexcept {
+  delete scratch;
+}
+
 namespace {
 
 /// Below this many triangles per set the parallel tasks cost more than they save.
@@ -41,7 +54,7 @@ std::size_t flip_budget(std::size_t vertices) {
 
 /// Every interior edge once, in triangle order (the stack pops them in reverse).
 void push_interior_edges(const Mesh& mesh, std::vector<std::uint32_t>& stack,
-                         std::vector<std::uint8_t>& queued) {
+                         std::span<std::uint8_t> queued) {
   for (std::uint32_t h = 0; h < mesh.twin.size(); ++h) {
     if (mesh.twin[h] == no_twin || mesh.twin[h] < h) continue;
     stack.push_back(h);
@@ -49,11 +62,13 @@ void push_interior_edges(const Mesh& mesh, std::vector<std::uint32_t>& stack,
   }
 }
 
-void flip_sequentially(Mesh& mesh, std::size_t budget, const RunContext& ctx,
+void flip_sequentially(DelaunayScratch& scratch, std::size_t budget, const RunContext& ctx,
                        DelaunayStatistics& stats) {
+  Mesh& mesh = scratch.mesh;
+  FillVector<std::uint8_t>& queued = scratch.queued;
   ctx.run_serial("cdt flip", [&] {
     std::vector<std::uint32_t> stack;
-    std::vector<std::uint8_t> queued(mesh.twin.size(), 0);
+    queued.assign(mesh.twin.size(), 0);
     push_interior_edges(mesh, stack, queued);
     stats.flips = flip_until_delaunay(mesh, stack, queued, FlipScope{}, budget);
   });
@@ -66,6 +81,7 @@ void copy_in_tasks(const TriangleList& from, TriangleList& to, const RunContext&
     to = from;
     return;
   }
+  if (to.capacity() < from.size()) to.clear();  // growing: nothing old to copy
   to.resize(from.size());
   const std::size_t tasks = ctx.tasks_for(from.size(), std::size_t{1} << 16);
   ctx.run_tasks("cdt clip's triangles", tasks, [&](std::size_t t) {
@@ -78,20 +94,27 @@ void copy_in_tasks(const TriangleList& from, TriangleList& to, const RunContext&
 }
 
 /// Flips in sets, then across their borders; false, with the border flips cut short, where
-/// those passed border_flips_per_edge. `clipped`: the triangles before any flip, copied after
-/// the sets' arrays are made (those reuse memory just freed; the copy's first touch of fresh
-/// pages is in tasks).
-bool flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunContext& ctx,
-                  DelaunayStatistics& stats, std::size_t region_ordered, TriangleList& clipped) {
-  TrianglePartition partition;
+/// those passed border_flips_per_edge. scratch.clipped: the triangles before any flip.
+bool flip_in_sets(DelaunayScratch& scratch, std::uint32_t sets, std::size_t budget,
+                  const RunContext& ctx, DelaunayStatistics& stats, std::size_t region_ordered) {
+  Mesh& mesh = scratch.mesh;
+  TrianglePartition& partition = scratch.partition;
   const std::size_t count = mesh.triangles->size();
   if (runs_make_sets(region_ordered, count, sets))
     partition_in_runs(count, sets, ctx, partition);
   else
     ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
-  std::vector<std::uint8_t> queued;
-  ctx.run_serial("cdt flip sets: queue", [&] { queued.assign(mesh.twin.size(), 0); });
-  copy_in_tasks(*mesh.triangles, clipped, ctx);
+  FillVector<std::uint8_t>& queued = scratch.queued;
+  const std::size_t halves = mesh.twin.size();
+  queued.clear();  // growing, a FillVector then copies nothing; the tasks below clear it
+  queued.resize(halves);
+  const std::size_t queue_tasks = ctx.tasks_for(halves, std::size_t{1} << 16);
+  ctx.run_tasks("cdt flip sets: queue", queue_tasks, [&](std::size_t t) {
+    std::fill(queued.begin() + static_cast<std::ptrdiff_t>(part_begin(halves, queue_tasks, t)),
+              queued.begin() + static_cast<std::ptrdiff_t>(part_begin(halves, queue_tasks, t + 1)),
+              std::uint8_t{0});
+  });
+  copy_in_tasks(*mesh.triangles, scratch.clipped, ctx);
   std::vector<std::size_t> flips(sets, 0);
   std::vector<std::vector<std::uint32_t>> borders(sets);
   ctx.run_tasks("cdt flip sets", sets, [&](std::size_t s) {
@@ -120,7 +143,8 @@ bool flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
   const std::size_t left = budget - std::min(budget, stats.flips_in_partitions);
   const std::size_t border_budget = std::min(
       left, border_flips_per_edge * std::max(mesh.interior_edges, stats.flips_in_partitions));
-  stats.flips_on_borders = flip_borders(mesh, std::move(suspects), queued, ctx, border_budget);
+  stats.flips_on_borders =
+      flip_borders(mesh, std::move(suspects), queued, scratch.border_marks, ctx, border_budget);
   stats.flips = stats.flips_in_partitions + stats.flips_on_borders;
   return stats.flips_on_borders < border_budget;
 }
@@ -129,9 +153,10 @@ bool flip_in_sets(Mesh& mesh, std::uint32_t sets, std::size_t budget, const RunC
 
 void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
                    TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats,
-                   std::size_t region_ordered) {
+                   DelaunayScratchPtr& scratch, std::size_t region_ordered) {
   stats = {};
-  Mesh mesh;
+  if (!scratch) scratch.reset(new DelaunayScratch);
+  Mesh& mesh = scratch->mesh;
   // Its phases are recorded as "cdt adjacency: ...".
   if (!build_mesh(points, polygon, triangles, mesh, ctx))
     return;  // not a triangulation: flipping could only make it worse
@@ -140,15 +165,14 @@ void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
   const std::size_t sets =
       std::min<std::size_t>(ctx.partitions, triangles.size() / min_triangles_per_set);
   if (sets > 1) {
-    TriangleList clipped;
-    if (flip_in_sets(mesh, static_cast<std::uint32_t>(sets), budget, ctx, stats, region_ordered,
-                     clipped))
+    if (flip_in_sets(*scratch, static_cast<std::uint32_t>(sets), budget, ctx, stats,
+                     region_ordered))
       return;
-    copy_in_tasks(clipped, triangles, ctx);
+    copy_in_tasks(scratch->clipped, triangles, ctx);
     build_mesh(points, polygon, triangles, mesh, ctx);  // the same edges: `edges` stays
     stats.flips_in_partitions = stats.flips_on_borders = 0;
   }
-  flip_sequentially(mesh, budget, ctx, stats);
+  flip_sequentially(*scratch, budget, ctx, stats);
 }
 
 }  // namespace pear::detail

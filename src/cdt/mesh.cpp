@@ -12,20 +12,20 @@
 namespace pear::detail {
 namespace {
 
-/// An array left unfilled: every entry is written before it is read. (new T[n] of a scalar
-/// leaves it so; std::make_unique_for_overwrite does the same, but libc++ 14, the WebAssembly
-/// build's, lacks it.)
+/// `v` made `count` long without keeping what it held: from empty, a FillVector grows without
+/// copying or filling (every entry is then written by the parallel tasks; filled on one thread
+/// they were 25 ms of Eurasia's 6M edges), and within its capacity it does not allocate.
 template <class T>
-std::unique_ptr<T[]> unfilled(std::size_t count) {
-  return std::unique_ptr<T[]>(new T[count]);
+T* room_for(FillVector<T>& v, std::size_t count) {
+  v.clear();
+  v.resize(count);
+  return v.data();
 }
 
 /// The edges to match, as (low, high) caller indices: every half-edge e < half_edges (3t + k),
-/// then every ring edge (half_edges + its first clean vertex).
+/// then every ring edge (half_edges + its first clean vertex). In the mesh's build arrays.
 struct EdgeKeys {
-  // Not vectors: every entry is written by the parallel tasks, so a serial zero fill would
-  // only add to the span (25 ms on Eurasia's 6M edges).
-  std::unique_ptr<std::uint32_t[]> low, high;
+  std::uint32_t *low = nullptr, *high = nullptr;
   std::size_t half_edges = 0;
 };
 
@@ -35,10 +35,10 @@ struct EdgeKeys {
 struct EdgeBuckets {
   VertexBuckets vertices;
   std::size_t parts = 1;
-  std::vector<std::size_t> counts;  ///< [chunk * parts + bucket]: then where the chunk writes
-  std::vector<std::size_t> begin;   ///< bucket b is edges[begin[b], begin[b + 1])
-  std::unique_ptr<std::uint32_t[]> edges;  ///< bucket after bucket (as EdgeKeys: no zero fill)
-  std::vector<std::uint8_t> bad_end;       ///< per chunk: an edge ends past the points
+  std::vector<std::size_t> counts;    ///< [chunk * parts + bucket]: then where the chunk writes
+  std::vector<std::size_t> begin;     ///< bucket b is edges[begin[b], begin[b + 1])
+  std::uint32_t* edges = nullptr;     ///< bucket after bucket (as EdgeKeys, in the build arrays)
+  std::vector<std::uint8_t> bad_end;  ///< per chunk: an edge ends past the points
 };
 
 /// Chunk c of [0, count) cut into `parts`.
@@ -92,7 +92,7 @@ void collect_chunk(const CleanPolygon& polygon, const TriangleList& triangles, s
 }
 
 /// Where each chunk writes in each bucket: buckets one after another, chunks in order inside.
-void place_chunks(EdgeBuckets& buckets) {
+void place_chunks(EdgeBuckets& buckets, FillVector<std::uint32_t>& edges) {
   const std::size_t parts = buckets.parts;
   buckets.begin.assign(parts + 1, 0);
   std::size_t at = 0;
@@ -101,7 +101,7 @@ void place_chunks(EdgeBuckets& buckets) {
     for (std::size_t c = 0; c < parts; ++c) at += std::exchange(buckets.counts[c * parts + b], at);
   }
   buckets.begin[parts] = at;
-  buckets.edges = unfilled<std::uint32_t>(at);
+  buckets.edges = room_for(edges, at);
 }
 
 /// Makes h and g twins, counted in `pairs` (a bucket's own count: buckets run in parallel).
@@ -249,10 +249,10 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     mesh.points = points;
     mesh.triangles = &triangles;
     mesh.interior_edges = 0;
-    mesh.twin.resize(3 * triangles.size());  // no_twin written by the tasks below
+    room_for(mesh.twin, 3 * triangles.size());  // no_twin written by the tasks below
     keys.half_edges = 3 * triangles.size();
-    keys.low = unfilled<std::uint32_t>(edges);
-    keys.high = unfilled<std::uint32_t>(edges);
+    keys.low = room_for(mesh.build.low, edges);
+    keys.high = room_for(mesh.build.high, edges);
     buckets.counts.assign(buckets.parts * buckets.parts, 0);
     buckets.bad_end.assign(buckets.parts, 0);
   });
@@ -272,7 +272,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
       matches[0] = match_bucket(mesh, keys, nullptr, edges, buckets.vertices, points.size());
     });
   } else {
-    ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets); });
+    ctx.run_serial("cdt adjacency: place", [&] { place_chunks(buckets, mesh.build.edges); });
     ctx.run_tasks("cdt adjacency: scatter", buckets.parts, [&](std::size_t c) {
       std::size_t* at = &buckets.counts[c * buckets.parts];
       for_chunk_edges(keys, polygon.points.size(), buckets.parts, c, [&](std::size_t e) {
@@ -280,7 +280,7 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
       });
     });
     ctx.run_tasks("cdt adjacency: match", buckets.parts, [&](std::size_t b) {
-      matches[b] = match_bucket(mesh, keys, buckets.edges.get() + buckets.begin[b],
+      matches[b] = match_bucket(mesh, keys, buckets.edges + buckets.begin[b],
                                 buckets.begin[b + 1] - buckets.begin[b], buckets.vertices,
                                 buckets.vertices.width());
     });
@@ -341,7 +341,7 @@ void flip(Mesh& mesh, std::uint32_t h, FlipScope scope) {
 }
 
 std::size_t flip_until_delaunay(Mesh& mesh, std::vector<std::uint32_t>& stack,
-                                std::vector<std::uint8_t>& queued, FlipScope scope,
+                                std::span<std::uint8_t> queued, FlipScope scope,
                                 std::size_t budget) {
   std::size_t flips = 0;
   const auto push = [&](std::uint32_t h) {

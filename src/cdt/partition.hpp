@@ -10,11 +10,11 @@
 namespace pear::detail {
 
 /// The triangles cut into consecutive pieces of one breadth-first walk of the dual graph, or of
-/// the clipper's own order.
+/// the clipper's own order. FillVectors: partition_in_runs fills them in tasks.
 struct TrianglePartition {
-  std::vector<std::uint32_t> part;   ///< the set of each triangle
-  std::vector<std::uint32_t> order;  ///< triangles in walk order
-  std::vector<std::size_t> begin;    ///< set s is order[begin[s], begin[s + 1])
+  FillVector<std::uint32_t> part;   ///< the set of each triangle
+  FillVector<std::uint32_t> order;  ///< triangles in walk order
+  std::vector<std::size_t> begin;   ///< set s is order[begin[s], begin[s + 1])
   std::size_t sets() const { return begin.empty() ? 0 : begin.size() - 1; }
 };
 

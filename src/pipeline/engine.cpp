@@ -449,7 +449,8 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
     // partition), 16.7 and 64 million after divide-and-conquer's at 2 and 16.
     RunContext flip_ctx = ctx;
     if (flip_ctx.partitions > 1 && outline.few_long_runs()) flip_ctx.partitions = 1;
-    make_delaunay(caller_points(input, flip_ctx), clean_, out, flip_ctx, delaunay, region_ordered_);
+    make_delaunay(caller_points(input, flip_ctx), clean_, out, flip_ctx, delaunay,
+                  delaunay_scratch_, region_ordered_);
   }
   return status;
 }

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "cdt/delaunay.hpp"
 #include "clean/clean.hpp"
 #include "core/stage.hpp"
 #include "earclip/bridge.hpp"
@@ -102,7 +103,8 @@ class Engine {
   std::size_t region_ordered_ = 0;  ///< first triangles clipped region by region (for the CDT)
   Boundary part_;                   ///< a region copied out of boundary_ (copy_cycle)
   EarClipper clipper_;
-  VariantScratchPtr variant_scratch_;  ///< the parallel variants' arrays, made on first use
+  VariantScratchPtr variant_scratch_;    ///< the parallel variants' arrays, made on first use
+  DelaunayScratchPtr delaunay_scratch_;  ///< the CDT's arrays, made on first use
   std::vector<Finding> findings_;
   std::vector<std::pair<Point, std::uint32_t>> positions_;  ///< hole_touches_itself's scratch
   FillVector<Point> caller_points_;                         ///< caller_points' copy

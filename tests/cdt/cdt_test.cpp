@@ -118,7 +118,7 @@ std::size_t phases_named(const RunProfile& profile, std::string_view name) {
 // CDT far from the whole one (4.5 million flips across the border, against about 100,000 from
 // the clip on one partition), past 4 flips an edge the border flips stop and the clip's
 // triangles are flipped on one partition.
-TEST(Cdt, CascadesAcrossBordersGoToLawsonAndPastABudgetToOnePartition) {
+Polygon thin_ellipse_with_holes() {
   Ring ring;
   const int n = 20000;
   for (int i = 0; i < n; ++i) {
@@ -131,6 +131,11 @@ TEST(Cdt, CascadesAcrossBordersGoToLawsonAndPastABudgetToOnePartition) {
       const double x = 0.3 * i, y = 0.3 * j;
       polygon.push_back({{x, y}, {x, y + 0.1}, {x + 0.1, y + 0.1}, {x + 0.1, y}});
     }
+  return polygon;
+}
+
+TEST(Cdt, CascadesAcrossBordersGoToLawsonAndPastABudgetToOnePartition) {
+  const Polygon polygon = thin_ellipse_with_holes();
   RunProfile profile;
   const auto result = constrained_delaunay(polygon, Algorithm::partition_and_cut, 2, 2, &profile);
   ASSERT_EQ(result.status, Status::ok);
@@ -141,6 +146,44 @@ TEST(Cdt, CascadesAcrossBordersGoToLawsonAndPastABudgetToOnePartition) {
   EXPECT_EQ(phases_named(profile, "cdt flip"), 1u);
   EXPECT_EQ(result.delaunay.flips_in_partitions + result.delaunay.flips_on_borders, 0u);
   EXPECT_LT(result.delaunay.flips, 20 * result.delaunay.edges);
+}
+
+// The CDT's arrays stay with the engine between runs (the mesh, its build's keys, the sets, the
+// flags, the clip's copy, the border rounds' marks): one Triangulator takes polygons larger and
+// smaller than the last, on one partition and in sets (with border rounds, and with the border
+// flips given up and the clip's copy restored), and each comes out as a Triangulator that
+// never ran before makes it.
+TEST(Cdt, ArraysKeptBetweenRunsGiveEachPolygonItsOwnCdt) {
+  const struct {
+    Polygon polygon;
+    Algorithm algorithm;
+    unsigned partitions;
+  } runs[] = {
+      {generate_polygon("random-holes", 20000, 5), Algorithm::sequential, 4},
+      {generate_polygon("star", 600, 2), Algorithm::sequential, 1},
+      {thin_ellipse_with_holes(), Algorithm::partition_and_cut, 2},
+      {generate_polygon("random-holes", 8000, 7), Algorithm::partition_and_cut, 3},
+      {generate_polygon("random-holes", 20000, 5), Algorithm::sequential, 4},
+      {generate_polygon("random-holes", 20000, 5), Algorithm::sequential, 1},
+      {generate_polygon("spiral", 30000, 3), Algorithm::automatic, 16},
+  };
+  Triangulator kept;
+  for (const auto& run : runs) {
+    SCOPED_TRACE(std::to_string(run.polygon.front().size()) + " outer vertices, partitions " +
+                 std::to_string(run.partitions));
+    Options options{.algorithm = run.algorithm, .delaunay = true};
+    options.threads = 2;
+    options.partitions = run.partitions;
+    options.executor = executor_for(2);
+    const auto again = kept.triangulate(run.polygon, options);
+    Triangulator fresh;
+    const auto first = fresh.triangulate(run.polygon, options);
+    ASSERT_EQ(first.status, Status::ok);
+    EXPECT_EQ(again.triangles, first.triangles);
+    EXPECT_EQ(again.delaunay.flips, first.delaunay.flips);
+    EXPECT_EQ(again.delaunay.flips_on_borders, first.delaunay.flips_on_borders);
+    expect_delaunay(run.polygon, again.triangles);
+  }
 }
 
 // Many sets give more border half-edges than one task pairs: they are paired in ranges of

@@ -85,6 +85,25 @@ TEST_P(MeshBuild, SameTwinsAtEveryThreadAndPartitionCount) {
                    });
 }
 
+// A mesh keeps its build's arrays: built again for a larger and a smaller triangulation, at
+// other partition counts, it holds each one's own twins (a stale entry would pair edges of the
+// last triangulation).
+TEST(MeshBuild, BuiltAgainInItsOwnArraysEachTriangulationGetsItsTwins) {
+  Triangulated large = triangulated(generate_polygon("random-holes", 30'000, 3));
+  Triangulated small = triangulated(generate_polygon("star", 2'000, 4));
+  Mesh kept;
+  for_each_context({2u}, {1u, 16u}, [&](const RunContext& ctx, const RunProfile&) {
+    for (Triangulated* t : {&large, &small, &large}) {
+      Mesh fresh;
+      ASSERT_TRUE(build_mesh(t->points, t->clean, t->triangles, fresh, ctx));
+      ASSERT_TRUE(build_mesh(t->points, t->clean, t->triangles, kept, ctx));
+      EXPECT_EQ(kept.twin, fresh.twin);
+      EXPECT_EQ(kept.interior_edges, fresh.interior_edges);
+      expect_twins_right(kept, t->clean.points.size());
+    }
+  });
+}
+
 INSTANTIATE_TEST_SUITE_P(Families, MeshBuild,
                          ::testing::Values("random", "random-holes", "star", "spiral", "comb"));
 
