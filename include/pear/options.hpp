@@ -23,7 +23,7 @@ class Executor;  // pear/scheduler.hpp
 enum class Algorithm : std::uint8_t {
   automatic,           ///< pear picks by size and partitions (see README "Which algorithm")
   sequential,          ///< the sequential FIST-style ear clipper
-  partition_and_cut,   ///< paper §2.2: k chains clipped in parallel, each with its own queue
+  partition_and_cut,   ///< paper §2.2: chains clipped in parallel, each with its own queue
   mark_and_cut,        ///< paper §2.3: rounds of clipping every second ear in parallel
   divide_and_conquer,  ///< paper §2.1: vertical split lines, sub-polygons in parallel, Steiner
                        ///< points removed again

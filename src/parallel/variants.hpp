@@ -25,7 +25,7 @@ using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>
 // The variants are never inlined into the engine (its one call site each would take them in
 // whole): the WebAssembly build compiles them for size and the engine for speed (src/meson.build).
 
-/// Paper §2.2: landmarks cut the cycle through `entry` into ctx.partitions chains, each clipped
+/// Paper §2.2: landmarks cut the cycle through `entry` into two chains a partition, each clipped
 /// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
 /// (chain after chain) to `out` and returns a live node of what is left for the sequential
 /// engine to finish, or no_node when nothing is left. `shared`: the nodes at repeated positions
