@@ -150,7 +150,9 @@ std::optional<std::uint32_t> sweep_edges(const RingEdges& edges,
                                          std::span<const std::uint32_t> subset);
 /// Borders of `slabs` vertical slabs (slab s is x in [borders[s - 1], borders[s])) that give
 /// each slab about as many edges, an edge counted in every slab its x-range meets.
-std::vector<double> slab_borders(const RingEdges& edges, std::uint32_t slabs);
+/// The sample's reading and sorting are ctx's tasks.
+std::vector<double> slab_borders(const RingEdges& edges, std::uint32_t slabs,
+                                 const RunContext& ctx = RunContext{});
 /// The sweep in `slabs` vertical slabs, in parallel; an edge goes to every slab its box meets.
 void sweep_in_slabs(const RingEdges& edges, std::uint32_t slabs, const RunContext& ctx,
                     SmallestViolation& found);

@@ -1009,10 +1009,17 @@ TEST(Simplicity, SlabBordersGiveEachSlabAboutAsManyEdges) {
     edges.boxes[i] = {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
                       std::max(a.y, b.y)};
   }
+  const ThreadContexts contexts;
   for (std::uint32_t slabs : {2u, 5u, 12u, 16u}) {
     SCOPED_TRACE(std::to_string(slabs) + " slabs");
     const std::vector<double> borders = slab_borders(edges, slabs);
     ASSERT_EQ(borders.size(), slabs - 1);
+    // The sample is read and sorted in tasks: the same borders on any threads and partitions.
+    for (RunContext ctx : contexts.list)
+      for (std::uint32_t partitions : {3u, 16u}) {
+        ctx.partitions = partitions;
+        EXPECT_EQ(slab_borders(edges, slabs, ctx), borders) << partitions << " partitions";
+      }
     EXPECT_TRUE(std::is_sorted(borders.begin(), borders.end()));
     const auto slab_of = [&](double x) {
       return static_cast<std::size_t>(std::upper_bound(borders.begin(), borders.end(), x) -
