@@ -1,7 +1,6 @@
 #include "borders.hpp"
 
 #include <algorithm>
-#include <memory>
 #include <span>
 
 #include "geometry/sort.hpp"

@@ -11,7 +11,7 @@ namespace pear::detail {
 /// The CDT's arrays (the mesh and its build's keys, the sets, the flags, the clip's copy, the
 /// border rounds' marks), kept between runs: the engine keeps one, made on first use. Allocated
 /// and freed by every run, Eurasia's took 13 ms of its CDT at 16 partitions on the calling
-/// thread, outside every phase (most of it handing 200 MB back to the system).
+/// thread, outside every phase (most of it handing 150 MB back to the system).
 struct DelaunayScratch;
 struct DelaunayScratchDeleter {
   void operator()(DelaunayScratch* scratch) const noexcept;
