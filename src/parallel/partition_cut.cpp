@@ -20,6 +20,11 @@ constexpr std::size_t min_chain_nodes = 256;  ///< below this a task costs more 
 /// Each chain's queue orders only its own ears: `top`'s average smallest angle moved by at most
 /// 0.2% (Borneo at 16 partitions 12.53 -> 12.50 degrees, Koch-8 30.96 -> 30.92).
 constexpr std::size_t chains_per_partition = 2;
+/// Where the CDT flips the triangles after, in sets that are runs of the chains' order, one chain
+/// a partition: with two, Koch-8's flips across the sets' borders at 16 partitions cascaded
+/// (Lawson's loop on one thread 1.5 -> 4.0 ms; the CDT projected at 16 threads 8.4 -> 10.9 ms),
+/// and the coasts' CDT moved within the runs' noise.
+constexpr std::size_t chains_per_partition_for_flips = 1;
 constexpr int max_rounds = 4;
 /// Where round r puts its first landmark, in chain lengths: corridors whose two walls lie in
 /// different chains (a spiral, a thickened curve) are zipped up from their dead ends, so each
@@ -45,20 +50,23 @@ void VariantScratchDeleter::operator()(VariantScratch* scratch) const noexcept {
 
 std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic heuristic,
                                 const RunContext& ctx, TriangleList& out,
-                                VariantScratchPtr& scratch, SharedPositions shared) {
+                                VariantScratchPtr& scratch, SharedPositions shared,
+                                bool flipped_after) {
   const std::size_t partitions = ctx.partitions;
+  const std::size_t per_partition =
+      flipped_after ? chains_per_partition_for_flips : chains_per_partition;
   if (partitions < 2) return entry;
   if (!scratch) scratch.reset(new VariantScratch);
   SharedBoundary& s = scratch->shared;
   std::size_t nodes = s.start(b, entry, ctx, shared);
   // A clipper (with its queue) for each chain there can be, not for each partition asked for.
-  const std::size_t most = std::min(chains_per_partition * partitions, nodes / min_chain_nodes);
+  const std::size_t most = std::min(per_partition * partitions, nodes / min_chain_nodes);
   std::vector<ChainClipper>& clippers = scratch->clippers;
   std::vector<TriangleList>& parts = scratch->parts;
   if (clippers.size() < most) clippers.resize(most);
   if (parts.size() < most) parts.resize(most);
   for (int round = 0; round < max_rounds; ++round) {
-    const std::size_t chains = std::min(chains_per_partition * partitions, nodes / min_chain_nodes);
+    const std::size_t chains = std::min(per_partition * partitions, nodes / min_chain_nodes);
     if (chains < 2) break;
     const auto offset =
         static_cast<std::size_t>(landmark_shift[round] * static_cast<double>(nodes / chains));

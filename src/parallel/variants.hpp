@@ -25,16 +25,17 @@ using VariantScratchPtr = std::unique_ptr<VariantScratch, VariantScratchDeleter>
 // The variants are never inlined into the engine (its one call site each would take them in
 // whole): the WebAssembly build compiles them for size and the engine for speed (src/meson.build).
 
-/// Paper §2.2: landmarks cut the cycle through `entry` into two chains a partition, each clipped
-/// by its own task with its own ear queue; landmarks are never clipped. Appends the triangles
-/// (chain after chain) to `out` and returns a live node of what is left for the sequential
-/// engine to finish, or no_node when nothing is left. `shared`: the nodes at repeated positions
-/// when the engine knows them (else they are hashed here). `scratch`: made on first use, kept
-/// for the next run.
+/// Paper §2.2: landmarks cut the cycle through `entry` into two chains a partition (one where
+/// `flipped_after`: the CDT's sets are then runs of the chains' order), each clipped by its own
+/// task with its own ear queue; landmarks are never clipped. Appends the triangles (chain after
+/// chain) to `out` and returns a live node of what is left for the sequential engine to finish,
+/// or no_node when nothing is left. `shared`: the nodes at repeated positions when the engine
+/// knows them (else they are hashed here). `scratch`: made on first use, kept for the next run.
 [[gnu::noinline]] std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry,
                                                   EarHeuristic heuristic, const RunContext& ctx,
                                                   TriangleList& out, VariantScratchPtr& scratch,
-                                                  SharedPositions shared = {});
+                                                  SharedPositions shared = {},
+                                                  bool flipped_after = false);
 
 /// Paper §2.3: rounds of "mark every second convex node, clip in parallel the marked ones that
 /// are ears" until a round clips few; returns what is left, as partition_and_cut does.

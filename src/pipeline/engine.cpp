@@ -374,7 +374,7 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
                                 (clean_.ring_count() - 1) * 64 >= boundary_.size() ? 0.5 : 1);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
-                               shared_);
+                               shared_, options.delaunay);
       region_ordered_ = out.size();  // chain after chain: each chain's ears lie together
       break;
     case Algorithm::mark_and_cut:

@@ -131,26 +131,29 @@ TEST(Tricky, CollinearRunsAcrossChainEnds) {
 }
 
 // Partition-and-cut cuts the boundary into two chains a partition (the scheduler evens out
-// chains of unequal cost), none under 256 nodes: the first round's phase has that many tasks,
-// and the triangles do not depend on the threads.
-TEST(Tricky, TwoChainsAPartitionEachOfAtLeast256Nodes) {
+// chains of unequal cost), none under 256 nodes, and one a partition where the CDT flips the
+// triangles after (its sets are runs of the chains' order): the first round's phase has that
+// many tasks, and the triangles do not depend on the threads.
+TEST(Tricky, TwoChainsAPartitionOneBeforeTheCdtEachOfAtLeast256Nodes) {
   const Polygon star = generate_polygon("star", 20'000, 5);
-  for (const auto& [partitions, chains] : {std::pair{2u, 4u}, {3u, 6u}, {16u, 32u}, {50u, 78u}}) {
-    SCOPED_TRACE("partitions " + std::to_string(partitions));
-    RunProfile profile;
-    const Options options{.algorithm = Algorithm::partition_and_cut,
-                          .threads = 2,
-                          .partitions = partitions,
-                          .profile = &profile};
-    const auto triangles = check_polygon(star, true, options);
-    const auto first_round = std::find_if(profile.phases.begin(), profile.phases.end(),
-                                          [](const auto& p) { return p.name == "clip chains"; });
-    ASSERT_NE(first_round, profile.phases.end());
-    EXPECT_EQ(first_round->task_seconds.size(), chains);
-    Options one_thread = options;
-    one_thread.threads = 1, one_thread.profile = nullptr;
-    EXPECT_EQ(triangulate(star, one_thread).triangles, triangles) << "not deterministic";
-  }
+  for (const bool delaunay : {false, true})
+    for (const auto& [partitions, chains] : {std::pair{2u, 4u}, {3u, 6u}, {16u, 32u}, {50u, 78u}}) {
+      SCOPED_TRACE("partitions " + std::to_string(partitions) + (delaunay ? ", CDT" : ""));
+      RunProfile profile;
+      const Options options{.algorithm = Algorithm::partition_and_cut,
+                            .delaunay = delaunay,
+                            .threads = 2,
+                            .partitions = partitions,
+                            .profile = &profile};
+      const auto triangles = check_polygon(star, true, options);
+      const auto first_round = std::find_if(profile.phases.begin(), profile.phases.end(),
+                                            [](const auto& p) { return p.name == "clip chains"; });
+      ASSERT_NE(first_round, profile.phases.end());
+      EXPECT_EQ(first_round->task_seconds.size(), delaunay ? std::min(partitions, 78u) : chains);
+      Options one_thread = options;
+      one_thread.threads = 1, one_thread.profile = nullptr;
+      EXPECT_EQ(triangulate(star, one_thread).triangles, triangles) << "not deterministic";
+    }
 }
 
 TEST(Tricky, CombsStripIsFannedInTasks) {
