@@ -290,17 +290,14 @@ std::size_t flip_borders(Mesh& mesh, std::vector<std::uint32_t> suspects,
                          const RunContext& ctx, std::size_t budget) {
   RoundMarks marks;
   const std::size_t triangles = mesh.triangles->size(), halves = mesh.twin.size();
-  // Emptied first, so that growing copies nothing; the tasks below write every entry.
-  for (FillVector<std::uint32_t>* v : {&kept.own, &kept.touched, &kept.listed}) v->clear();
-  kept.own.resize(triangles);
-  kept.touched.resize(triangles);
-  kept.listed.resize(halves);
-  marks.own = kept.own.data(), marks.touched = kept.touched.data();
-  marks.listed = kept.listed.data();
+  // The tasks below write every entry.
+  marks.own = regrow_unfilled(kept.own, triangles);
+  marks.touched = regrow_unfilled(kept.touched, triangles);
+  marks.listed = regrow_unfilled(kept.listed, halves);
   const std::size_t tasks = std::max<std::size_t>(1, halves >> 16);
   ctx.run_tasks("cdt border rounds: marks", tasks, [&](std::size_t t) {
     const auto clear = [&](std::uint32_t* marks_of, std::size_t n) {
-      std::fill(marks_of + n * t / tasks, marks_of + n * (t + 1) / tasks, 0u);
+      std::fill(marks_of + part_begin(n, tasks, t), marks_of + part_begin(n, tasks, t + 1), 0u);
     };
     clear(marks.own, triangles);
     clear(marks.touched, triangles);

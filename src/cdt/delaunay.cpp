@@ -106,8 +106,7 @@ bool flip_in_sets(DelaunayScratch& scratch, std::uint32_t sets, std::size_t budg
     ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
   FillVector<std::uint8_t>& queued = scratch.queued;
   const std::size_t halves = mesh.twin.size();
-  queued.clear();  // growing, a FillVector then copies nothing; the tasks below clear it
-  queued.resize(halves);
+  regrow_unfilled(queued, halves);  // the tasks below clear it
   const std::size_t queue_tasks = ctx.tasks_for(halves, std::size_t{1} << 16);
   ctx.run_tasks("cdt flip sets: queue", queue_tasks, [&](std::size_t t) {
     std::fill(queued.begin() + static_cast<std::ptrdiff_t>(part_begin(halves, queue_tasks, t)),

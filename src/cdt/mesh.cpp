@@ -11,18 +11,9 @@
 namespace pear::detail {
 namespace {
 
-/// `v` made `count` long without keeping what it held: from empty, a FillVector grows without
-/// copying or filling (every entry is then written by the parallel tasks; filled on one thread
-/// they were 25 ms of Eurasia's 6M edges), and within its capacity it does not allocate.
-template <class T>
-T* room_for(FillVector<T>& v, std::size_t count) {
-  v.clear();
-  v.resize(count);
-  return v.data();
-}
-
 /// The edges to match, as (low, high) caller indices: every half-edge e < half_edges (3t + k),
-/// then every ring edge (half_edges + its first clean vertex). In the mesh's build arrays.
+/// then every ring edge (half_edges + its first clean vertex). In the mesh's build arrays, which
+/// the tasks fill (filled on one thread they were 25 ms of Eurasia's 6M edges).
 struct EdgeKeys {
   std::uint32_t *low = nullptr, *high = nullptr;
   std::size_t half_edges = 0;
@@ -100,7 +91,7 @@ void place_chunks(EdgeBuckets& buckets, FillVector<std::uint32_t>& edges) {
     for (std::size_t c = 0; c < parts; ++c) at += std::exchange(buckets.counts[c * parts + b], at);
   }
   buckets.begin[parts] = at;
-  buckets.edges = room_for(edges, at);
+  buckets.edges = regrow_unfilled(edges, at);
 }
 
 /// Makes h and g twins, counted in `pairs` (a bucket's own count: buckets run in parallel).
@@ -248,10 +239,10 @@ bool build_mesh(std::span<const Point> points, const CleanPolygon& polygon, Tria
     mesh.points = points;
     mesh.triangles = &triangles;
     mesh.interior_edges = 0;
-    room_for(mesh.twin, 3 * triangles.size());  // no_twin written by the tasks below
+    regrow_unfilled(mesh.twin, 3 * triangles.size());  // no_twin written by the tasks below
     keys.half_edges = 3 * triangles.size();
-    keys.low = room_for(mesh.build.low, edges);
-    keys.high = room_for(mesh.build.high, edges);
+    keys.low = regrow_unfilled(mesh.build.low, edges);
+    keys.high = regrow_unfilled(mesh.build.high, edges);
     buckets.counts.assign(buckets.parts * buckets.parts, 0);
     buckets.bad_end.assign(buckets.parts, 0);
   });

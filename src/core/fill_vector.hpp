@@ -43,4 +43,14 @@ template <class T>
 using FillVector = std::vector<T>;
 #endif
 
+/// `v` made `count` long without keeping what it held: emptied first, a FillVector grows
+/// without copying or filling (for arrays whose every entry the tasks then write), and within
+/// its capacity it does not allocate. Returns its data.
+template <class T>
+T* regrow_unfilled(FillVector<T>& v, std::size_t count) {
+  v.clear();
+  v.resize(count);
+  return v.data();
+}
+
 }  // namespace pear::detail

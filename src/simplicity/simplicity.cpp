@@ -527,7 +527,7 @@ void SimplicityCheck::count_run_pairs(const RunContext& ctx) {
   };
   const std::size_t tasks = ctx.tasks_for(runs, 256);  // a few binary searches a run
   ctx.run_tasks("check simplicity: pair counts", tasks, [&](std::size_t t) {
-    for (std::size_t i = runs * t / tasks; i < runs * (t + 1) / tasks; ++i)
+    for (std::size_t i = part_begin(runs, tasks, t); i < part_begin(runs, tasks, t + 1); ++i)
       pairs_before_[i + 1] = pairs_of(i);
   });
   ctx.run_serial("check simplicity: pair sums", [&] {
