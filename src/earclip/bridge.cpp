@@ -7,39 +7,12 @@
 #include "core/sort_in_parts.hpp"
 #include "geometry/sort.hpp"
 #include "pear/config.hpp"
+#include "ray_crossing.hpp"
 
 namespace pear::detail {
-namespace {
-
-/// Where segment lo-hi (lo the lower end, not horizontal) meets the leftward ray from h: not at
-/// all, left of h at x, or exactly through h (h strictly inside it). Exact but for x, which
-/// only ranks the crossings.
-enum class Crossing { none, left, through };
-
-/// Inlined: the ray scan calls it for every edge in the cells it reads (callgrind: 20% more
-/// instructions in the scan as a call).
-[[gnu::always_inline]] inline Crossing ray_crossing(const Point& h, const Point& lo,
-                                                    const Point& hi, double& x) {
-  if (h.y < lo.y || h.y > hi.y) return Crossing::none;
-  const double side = orient2d(lo, hi, h);
-  if (side > 0) return Crossing::none;  // the edge lies to the right of h
-  if (side == 0) return !(h == lo) && !(h == hi) ? Crossing::through : Crossing::none;
-  x = h.y == lo.y ? lo.x : h.y == hi.y ? hi.x : lo.x + (h.y - lo.y) * (hi.x - lo.x) / (hi.y - lo.y);
-  return Crossing::left;
-}
-
-/// ray_crossing for an edge with its ends in either order; none for a horizontal edge (its
-/// endpoints end other edges).
-[[gnu::always_inline]] inline Crossing edge_crossing(const Point& h, Point a, Point b, double& x) {
-  if (a.y == b.y) return Crossing::none;
-  if (a.y > b.y) std::swap(a, b);
-  return ray_crossing(h, a, b, x);
-}
-
-}  // namespace
 
 std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Boundary& boundary,
-                                             const RunContext& ctx, bool in_parts) {
+                                             const RunContext& ctx, bool in_parts, bool apart) {
   std::vector<std::uint32_t> unjoined;
   redone_ = 0;
   edges_split_ = false;
@@ -48,6 +21,11 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   changed_cells_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
+  // Not in a build without threads: the WebAssembly module's budget (9 KB; the same boundary).
+  if (PEAR_HAS_THREADS && apart && polygon.ring_count() - 1 <= scanned_holes) {
+    join_scanned(polygon, ctx, in_parts, unjoined);
+    return unjoined;
+  }
   // Without threads the joining in parts would give the same boundary at more cost (and
   // code: the .wasm).
   if (!PEAR_HAS_THREADS || !in_parts || polygon.ring_count() - 1 <= few_holes) {
@@ -317,9 +295,9 @@ void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
             rank_.begin() + polygon.ring_starts[ring + 1], UINT32_MAX);
 }
 
-/// A node a bridge adds (a copy, in `cell`): merged at once.
-void HoleBridger::insert_node(std::size_t cell, std::uint32_t node) {
-  node_cells_.add(cell, node);
+/// A node a bridge adds (a copy): merged at once, in its cell's list.
+void HoleBridger::insert_node(std::uint32_t node) {
+  if (!PEAR_HAS_THREADS || gridded_) node_cells_.add(frame_.cell_of(b_->pos[node]), node);
 }
 
 /// An edge a bridge adds, from `start`: a new id, merged at once (entered in no cell yet).
@@ -336,6 +314,11 @@ std::uint32_t HoleBridger::new_edge(std::uint32_t start) {
 void HoleBridger::insert_edges(std::uint32_t start, std::uint32_t back) {
   const std::uint32_t first = new_edge(start);
   const std::uint32_t second = back == UINT32_MAX ? UINT32_MAX : new_edge(back);
+  if (PEAR_HAS_THREADS && !gridded_) {
+    added_edges_.push_back(first);
+    if (second != UINT32_MAX) added_edges_.push_back(second);
+    return;
+  }
   frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]], [&](std::size_t cell) {
     edge_cells_.add(cell, first);
     if (second != UINT32_MAX) edge_cells_.add(cell, second);
@@ -384,62 +367,40 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h, std::uint32_t rank) c
   return hit;
 }
 
-/// Eberly's method: an endpoint M of the hit edge, unless vertices lie in the triangle
-/// (h, crossing, M); then the one seen at the smallest angle from the ray (nearest on ties).
-/// Every decision is an exact orientation or comparison; the crossing x only bounds the search.
+/// Eberly's method (Sight) over the merged nodes in the cells of the triangle's rows.
 Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32_t rank) const {
-  const std::uint32_t s = edge_start_[hit.edge];
-  const Point a = b_->pos[s], c = b_->pos[b_->next[s]];
-  if (a.y == h.y && a.x <= h.x) return a;
-  if (c.y == h.y && c.x <= h.x) return c;
-  // The endpoint with the smaller x: the triangle (h, crossing, M) then lies left of h, where
-  // the hole being joined cannot reach.
-  const Point m = a.x < c.x || (a.x == c.x && a.y < c.y) ? a : c;
-  const double up = m.y > h.y ? 1 : -1;
-  const double edge_side = orient2d(a, c, h);
-  Point best = m;
-  const auto better = [&](const Point& v) {
-    const double turn = orient2d(h, best, v) * up;  // > 0: v is closer to the ray
-    if (turn != 0) return turn > 0;
-    return std::abs(v.x - h.x) + std::abs(v.y - h.y) <
-           std::abs(best.x - h.x) + std::abs(best.y - h.y);
-  };
-  const int c0 = frame_.column(std::min(hit.x, m.x)), c1 = frame_.column(h.x);
-  const int r0 = frame_.row(std::min(h.y, m.y)), r1 = frame_.row(std::max(h.y, m.y));
+  Sight sight;
+  sight.start(h, edge_start_[hit.edge], *b_);
+  if (!sight.open) return sight.best;
+  const int c0 = frame_.column(std::min(hit.x, sight.m.x)), c1 = frame_.column(h.x);
+  const int r0 = frame_.row(sight.y0), r1 = frame_.row(sight.y1);
   for (int r = r0; r <= r1; ++r) {
     for (int col = c0; col <= c1; ++col) {
       node_cells_.for_each(frame_.cell(col, r), [&](std::uint32_t node) {
-        if (!merged(node, rank)) return;
-        const Point& v = b_->pos[node];
-        if (v == h || v.x > h.x || (v.y - h.y) * up < 0 || (v.y - m.y) * up > 0) return;
-        const double es = orient2d(a, c, v);
-        if (es != 0 && (es > 0) != (edge_side > 0)) return;  // beyond the hit edge
-        const double hs = orient2d(h, m, v) * up;
-        if (hs < 0) return;  // on the far side of segment h-M from the ray
-        if (better(v)) best = v;
+        if (merged(node, rank)) sight.consider(b_->pos[node], node);
       });
     }
   }
-  return best;
+  return sight.best;
 }
 
 /// A splice turned node's sector or put a copy at its position: what the search found in its
 /// cell is looked up again.
-void HoleBridger::mark_changed(std::size_t cell) {
+void HoleBridger::mark_changed(const Point& p) {
   // A serial join: each hole is found right before its splice.
   if (!PEAR_HAS_THREADS || changed_cells_.empty()) return;
-  changed_cells_[cell] = 1;
+  changed_cells_[frame_.cell_of(p)] = 1;
 }
 
 /// `indexed_hole`: the hole whose bridge as found this is (bridge_cells_ lists it), or none.
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
                                 std::uint32_t indexed_hole) {
   Boundary& b = *b_;
-  const std::size_t target_cell = frame_.cell_of(b.pos[target]);
-  const std::size_t hole_cell = frame_.cell_of(b.pos[hole]);
-  mark_changed(target_cell);
-  mark_changed(hole_cell);
+  mark_changed(b.pos[target]);
+  mark_changed(b.pos[hole]);
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
+  note_copy(target_copy, target);
+  note_copy(hole_copy, hole);
   repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
   const std::uint32_t old_edge = out_edge_[target];
@@ -452,15 +413,15 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
     bridge_edge_[indexed_hole] = new_edge(target);
     new_edge(hole_copy);
   }
-  insert_node(target_cell, target_copy);
-  insert_node(hole_cell, hole_copy);
+  insert_node(target_copy);
+  insert_node(hole_copy);
 }
 
 /// The hole shares a point with the merged boundary: link the rings there, no bridge needed.
 void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
-  mark_changed(frame_.cell_of(b.pos[target]));
-  mark_changed(frame_.cell_of(b.pos[hole]));
+  mark_changed(b.pos[target]);
+  mark_changed(b.pos[hole]);
   const std::uint32_t after_target = b.next[target], after_hole = b.next[hole];
   repeated_.insert(repeated_.end(), {target, hole});
   b.link(target, after_hole);
@@ -476,8 +437,9 @@ void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
 void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
-  for (const std::uint32_t node : {start, end, hole}) mark_changed(frame_.cell_of(b.pos[node]));
+  for (const std::uint32_t node : {start, end, hole}) mark_changed(b.pos[node]);
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
+  note_copy(entry, hole);
   repeated_.insert(repeated_.end(), {hole, entry});
   b.link(start, entry);
   b.link(entry, b.next[hole]);
@@ -487,7 +449,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   const std::uint32_t hole_edge = out_edge_[hole];
   if (hole_edge != UINT32_MAX) edge_start_[hole_edge] = entry, out_edge_[entry] = hole_edge;
   out_edge_[hole] = UINT32_MAX;
-  insert_node(frame_.cell_of(b.pos[entry]), entry);
+  insert_node(entry);
   insert_edges(hole, UINT32_MAX);
   edges_split_ = true;  // edge `edge` is shorter now: what the parallel search saw of it is stale
 }

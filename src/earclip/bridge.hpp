@@ -32,14 +32,20 @@ class HoleBridger {
  public:
   /// Up to this many holes the grid is one cell: each hole scans every edge and node.
   static constexpr std::size_t few_holes = 4;
+  /// Up to this many holes on rings that are `apart`, no grid at all: every ray in one pass
+  /// over the edges, every visible vertex in one pass over the nodes (bridge_few.cpp).
+  static constexpr std::size_t scanned_holes = 64;
   /// `boundary` holds one node per clean vertex, each ring already linked as a cycle.
   /// Returns the leftmost node of every hole it could not join (nothing lies to its left: the
   /// hole is outside the outer ring, so the input is not a valid polygon). `in_parts`: the
   /// caller runs in parts (ctx.partitions > 1, a parallel run): with more than `few_holes`
   /// holes the search then runs as ctx's tasks, ctx.partitions x 4 of them; every phase is
-  /// recorded in ctx's profile.
+  /// recorded in ctx's profile. `apart`: no two vertices of the polygon share a position (the
+  /// simplicity check's verdict); up to scanned_holes holes are then joined without a grid,
+  /// to the same boundary.
   std::vector<std::uint32_t> join(const CleanPolygon& polygon, Boundary& boundary,
-                                  const RunContext& ctx = RunContext{}, bool in_parts = false);
+                                  const RunContext& ctx = RunContext{}, bool in_parts = false,
+                                  bool apart = false);
 
   /// Holes whose attachment the parallel search found and the splice had to find again (an
   /// earlier bridge crossed its ray): for tests and the profile's notes.
@@ -109,6 +115,28 @@ class HoleBridger {
     return !at.touches && at.hit.touching_edge == UINT32_MAX && at.hit.edge != UINT32_MAX;
   }
   void order_holes(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
+  // Without a grid (bridge_few.cpp).
+  /// Eberly's search for the vertex a hole's vertex h sees along its ray's hit edge a-c: M,
+  /// the end of a-c with the smaller x, or the vertex in triangle (h, crossing, M) seen at the
+  /// smallest angle from the ray (the nearest on ties). Every candidate lies in the box.
+  struct Sight {
+    Point h, a, c, m, best;
+    std::uint32_t best_node = UINT32_MAX;
+    double up = 1, edge_side = 0;
+    double x0 = 0, x1 = 0, y0 = 0, y1 = 0;
+    bool open = false;  ///< candidates remain to be looked at (M is not on the ray)
+    void start(const Point& hole, std::uint32_t start_node, const Boundary& b);
+    bool better(const Point& v) const;
+    void consider(const Point& v, std::uint32_t node);
+  };
+  void join_scanned(const CleanPolygon& polygon, const RunContext& ctx, bool in_parts,
+                    std::vector<std::uint32_t>& unjoined);
+  void cast_all(const RunContext& ctx, std::size_t tasks);
+  void sight_all(const RunContext& ctx, std::size_t tasks);
+  Attachment find_scanned(std::uint32_t k, bool passes_hold);
+  Attachment find_by_scan(std::uint32_t hole, std::uint32_t rank);
+  std::uint32_t node_at_scanned(std::uint32_t original, const Point& towards) const;
+  void note_copy(std::uint32_t copy, std::uint32_t of);
   void build_grid(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void fill_cells(std::uint32_t nodes);
   void build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx);
@@ -134,13 +162,13 @@ class HoleBridger {
   void for_each_indexed_bridge(std::size_t cell, Visit&& visit) const;
   bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known,
               std::uint32_t indexed);
-  void mark_changed(std::size_t cell);
+  void mark_changed(const Point& p);
   /// The most node or edge ids a join can end with: a bridge adds two nodes and two edges, a
   /// hole joined inside an edge one of each.
   std::size_t most_ids() const { return b_->size() + 2 * holes_.size(); }
   void reserve_for_splices();
   void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
-  void insert_node(std::size_t cell, std::uint32_t node);
+  void insert_node(std::uint32_t node);
   std::uint32_t new_edge(std::uint32_t start);
   void insert_edges(std::uint32_t start, std::uint32_t back);
   std::uint32_t node_at(const Point& p, const Point& towards, std::uint32_t rank) const;
@@ -180,6 +208,17 @@ class HoleBridger {
   /// sector (a node found there by the search must be looked up again).
   std::vector<std::uint8_t> changed_cells_;
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
+  /// Whether the grid lists what splices add (false while joining without one).
+  bool gridded_ = true;
+  /// Without a grid: per hole (by rank - 1) its ray's hit on the rings and the vertex it sees,
+  /// from the passes; the edges splices added; the nodes splices copied, each with the input
+  /// node at its position (ids from the node count on, in order).
+  std::vector<RayHit> scanned_hits_;
+  std::vector<Sight> sights_;  ///< per task and hole while the passes run
+  std::vector<std::uint32_t> seen_node_;
+  std::uint32_t first_copy_ = 0;  ///< the id of the first node a splice adds
+  std::vector<std::uint32_t> added_edges_;
+  std::vector<std::uint32_t> copy_of_;
   std::size_t redone_ = 0;
   std::vector<std::uint32_t> repeated_;
 };

@@ -244,7 +244,9 @@ std::vector<std::uint32_t> Engine::bridge_holes(const RunContext& ctx, bool in_p
     prev[first] = last;
     next[last] = first;
   }
-  return bridger_.join(clean_, boundary_, ctx, in_parts);
+  // No repeated position (the check's verdict): up to 64 holes are joined without a grid.
+  return bridger_.join(clean_, boundary_, ctx, in_parts,
+                       verdict_.touching == Verdict::Touching::no);
 }
 
 void Engine::bridge(bool checked, const RunContext& ctx) {

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 #include <random>
 #include <string>
@@ -18,6 +19,7 @@
 #include "core/link_runs.hpp"
 #include "earclip/bridge.hpp"
 #include "earclip/touching.hpp"
+#include "geometry/segments.hpp"
 #include "pear/generate.hpp"
 #include "pear/pear.hpp"
 #include "run_contexts.hpp"
@@ -45,11 +47,12 @@ struct Bridged {
   std::size_t redone = 0;
 };
 
-Bridged bridge(const CleanPolygon& clean, const RunContext& ctx, bool in_parts) {
+Bridged bridge(const CleanPolygon& clean, const RunContext& ctx, bool in_parts,
+               bool apart = false) {
   Bridged out{testing::rings_as_cycles(clean), {}, 0};
   Boundary& b = out.boundary;
   HoleBridger bridger;
-  out.unjoined = bridger.join(clean, b, ctx, in_parts);
+  out.unjoined = bridger.join(clean, b, ctx, in_parts, apart);
   out.redone = bridger.redone();
   return out;
 }
@@ -71,11 +74,32 @@ std::size_t crossing_edges(const Boundary& b) {
   return crossings;
 }
 
+/// Whether no two vertices of the polygon share a position (what `apart` asks of the caller).
+bool apart(const CleanPolygon& clean) {
+  std::vector<Point> points(clean.points.begin(), clean.points.end());
+  std::sort(points.begin(), points.end(), lexicographic_less);
+  return std::adjacent_find(points.begin(), points.end()) == points.end();
+}
+
+void expect_same_boundary(const Bridged& joined, const Bridged& serial) {
+  EXPECT_EQ(joined.unjoined, serial.unjoined);
+  EXPECT_EQ(joined.boundary.next, serial.boundary.next);
+  EXPECT_EQ(joined.boundary.prev, serial.boundary.prev);
+  EXPECT_EQ(joined.boundary.vertex, serial.boundary.vertex);
+  EXPECT_TRUE(joined.boundary.pos == serial.boundary.pos);
+}
+
 /// The serial joining is valid (one cycle, no crossing edges) and the joining in parts is the
-/// same at every thread and part count. Returns the most holes any run in parts had to redo.
+/// same at every thread and part count; so is the joining without a grid, where the rings are
+/// apart and the holes few enough. Returns the most holes any run in parts had to redo.
 std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = true) {
   const CleanPolygon clean = cleaned(polygon);
   const Bridged serial = bridge(clean, RunContext{}, false);
+  const bool scanned = apart(clean) && clean.ring_count() - 1 <= HoleBridger::scanned_holes;
+  if (scanned) {
+    SCOPED_TRACE("without a grid");
+    expect_same_boundary(bridge(clean, RunContext{}, false, true), serial);
+  }
   if (serial.unjoined.empty()) {
     EXPECT_EQ(testing::cycle_length(serial.boundary, 0), serial.boundary.size());
     if (check_crossings) {
@@ -88,11 +112,11 @@ std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = 
       [&](const RunContext& ctx, const RunProfile& profile) {
         const std::uint32_t partitions = ctx.partitions;
         const Bridged parts = bridge(clean, ctx, true);
-        EXPECT_EQ(parts.unjoined, serial.unjoined);
-        EXPECT_EQ(parts.boundary.next, serial.boundary.next);
-        EXPECT_EQ(parts.boundary.prev, serial.boundary.prev);
-        EXPECT_EQ(parts.boundary.vertex, serial.boundary.vertex);
-        EXPECT_TRUE(parts.boundary.pos == serial.boundary.pos);
+        expect_same_boundary(parts, serial);
+        if (scanned) {
+          SCOPED_TRACE("without a grid, in parts");
+          expect_same_boundary(bridge(clean, ctx, true, true), serial);
+        }
         redone = std::max(redone, parts.redone);
         // The points where the boundary passes more than once, untangled with the hashing in
         // parts: the same links, the same verdict, the same shared positions.
@@ -239,6 +263,47 @@ TEST(BridgeInParts, GeneratedFamilies) {
       SCOPED_TRACE(std::string(kind) + " seed " + std::to_string(seed));
       expect_same_in_parts(generate_polygon(kind, 1500, seed));
     }
+}
+
+/// Up to 64 holes on rings that share no position are joined without a grid (the rays in one
+/// pass over the edges, the visible vertices in one over the nodes): the serial grid's
+/// boundary, and in parts the passes are tasks.
+TEST(BridgeWithoutAGrid, RandomHolesUpTo64) {
+  for (std::uint64_t seed : {1u, 2u, 3u, 4u, 5u})
+    for (std::size_t vertices : {40u, 400u, 500u}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", " + std::to_string(vertices));
+      const Polygon polygon = generate_polygon("random-holes", vertices, seed);
+      const CleanPolygon clean = cleaned(polygon);
+      ASSERT_TRUE(apart(clean));
+      ASSERT_LE(clean.ring_count() - 1, HoleBridger::scanned_holes);
+      expect_same_in_parts(polygon);
+    }
+}
+
+/// A 20,000-gon with holes along its diameters: in parts the passes run as tasks.
+TEST(BridgeWithoutAGrid, LargeOutlineFewHoles) {
+  Polygon polygon{{}};
+  for (int i = 0; i < 20000; ++i) {
+    const double angle = 2 * 3.141592653589793 * i / 20000;
+    polygon[0].push_back({1000 * std::cos(angle), 1000 * std::sin(angle)});
+  }
+  for (int k = -5; k < 5; ++k) {
+    polygon.push_back(square(100.0 * k + 20, 30.0 * k, 40));
+    polygon.push_back(square(-15, 100.0 * k + 45, 10));
+  }
+  expect_same_in_parts(polygon, false);  // convex outline, holes apart: no crossing to look for
+  const CleanPolygon clean = cleaned(polygon);
+  for_each_context({2u}, {4u}, [&](const RunContext& ctx, const RunProfile& profile) {
+    bridge(clean, ctx, true, true);
+    for (const char* phase : {"bridge: rays", "bridge: sights"}) {
+      const auto at = std::find_if(profile.phases.begin(), profile.phases.end(),
+                                   [&](const auto& p) { return p.name == phase; });
+      EXPECT_EQ(at != profile.phases.end(), PEAR_HAS_THREADS != 0) << phase;
+      if (PEAR_HAS_THREADS && at != profile.phases.end()) {
+        EXPECT_GT(at->task_seconds.size(), 1u);
+      }
+    }
+  });
 }
 
 /// Past 512 holes they are sorted in tasks (and ranked in tasks): the same joining as the
