@@ -295,9 +295,9 @@ void HoleBridger::leave_out(const CleanPolygon& polygon, std::uint32_t ring) {
             rank_.begin() + polygon.ring_starts[ring + 1], UINT32_MAX);
 }
 
-/// A node a bridge adds (a copy): merged at once, in its cell's list.
-void HoleBridger::insert_node(std::uint32_t node) {
-  if (!PEAR_HAS_THREADS || gridded_) node_cells_.add(frame_.cell_of(b_->pos[node]), node);
+/// A node a bridge adds (a copy, in `cell`): merged at once, in its cell's list.
+void HoleBridger::insert_node(std::size_t cell, std::uint32_t node) {
+  if (!PEAR_HAS_THREADS || gridded_) node_cells_.add(cell, node);
 }
 
 /// An edge a bridge adds, from `start`: a new id, merged at once (entered in no cell yet).
@@ -386,18 +386,24 @@ Point HoleBridger::visible_target(const Point& h, const RayHit& hit, std::uint32
 
 /// A splice turned node's sector or put a copy at its position: what the search found in its
 /// cell is looked up again.
-void HoleBridger::mark_changed(const Point& p) {
+void HoleBridger::mark_changed(std::size_t cell) {
   // A serial join: each hole is found right before its splice.
   if (!PEAR_HAS_THREADS || changed_cells_.empty()) return;
-  changed_cells_[frame_.cell_of(p)] = 1;
+  changed_cells_[cell] = 1;
+}
+
+/// The grid cell of node v's position (0 while joining without a grid: nothing is listed).
+std::size_t HoleBridger::cell_of(std::uint32_t v) const {
+  return !PEAR_HAS_THREADS || gridded_ ? frame_.cell_of(b_->pos[v]) : 0;
 }
 
 /// `indexed_hole`: the hole whose bridge as found this is (bridge_cells_ lists it), or none.
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
                                 std::uint32_t indexed_hole) {
   Boundary& b = *b_;
-  mark_changed(b.pos[target]);
-  mark_changed(b.pos[hole]);
+  const std::size_t target_cell = cell_of(target), hole_cell = cell_of(hole);
+  mark_changed(target_cell);
+  mark_changed(hole_cell);
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
   note_copy(target_copy, target);
   note_copy(hole_copy, hole);
@@ -413,15 +419,15 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
     bridge_edge_[indexed_hole] = new_edge(target);
     new_edge(hole_copy);
   }
-  insert_node(target_copy);
-  insert_node(hole_copy);
+  insert_node(target_cell, target_copy);
+  insert_node(hole_cell, hole_copy);
 }
 
 /// The hole shares a point with the merged boundary: link the rings there, no bridge needed.
 void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
   Boundary& b = *b_;
-  mark_changed(b.pos[target]);
-  mark_changed(b.pos[hole]);
+  mark_changed(cell_of(target));
+  mark_changed(cell_of(hole));
   const std::uint32_t after_target = b.next[target], after_hole = b.next[hole];
   repeated_.insert(repeated_.end(), {target, hole});
   b.link(target, after_hole);
@@ -437,7 +443,7 @@ void HoleBridger::splice_touching(std::uint32_t target, std::uint32_t hole) {
 void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   Boundary& b = *b_;
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
-  for (const std::uint32_t node : {start, end, hole}) mark_changed(b.pos[node]);
+  for (const std::uint32_t node : {start, end, hole}) mark_changed(cell_of(node));
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
   note_copy(entry, hole);
   repeated_.insert(repeated_.end(), {hole, entry});
@@ -449,7 +455,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   const std::uint32_t hole_edge = out_edge_[hole];
   if (hole_edge != UINT32_MAX) edge_start_[hole_edge] = entry, out_edge_[entry] = hole_edge;
   out_edge_[hole] = UINT32_MAX;
-  insert_node(entry);
+  insert_node(cell_of(entry), entry);
   insert_edges(hole, UINT32_MAX);
   edges_split_ = true;  // edge `edge` is shorter now: what the parallel search saw of it is stale
 }

@@ -162,13 +162,14 @@ class HoleBridger {
   void for_each_indexed_bridge(std::size_t cell, Visit&& visit) const;
   bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known,
               std::uint32_t indexed);
-  void mark_changed(const Point& p);
+  void mark_changed(std::size_t cell);
+  std::size_t cell_of(std::uint32_t v) const;
   /// The most node or edge ids a join can end with: a bridge adds two nodes and two edges, a
   /// hole joined inside an edge one of each.
   std::size_t most_ids() const { return b_->size() + 2 * holes_.size(); }
   void reserve_for_splices();
   void leave_out(const CleanPolygon& polygon, std::uint32_t ring);
-  void insert_node(std::uint32_t node);
+  void insert_node(std::size_t cell, std::uint32_t node);
   std::uint32_t new_edge(std::uint32_t start);
   void insert_edges(std::uint32_t start, std::uint32_t back);
   std::uint32_t node_at(const Point& p, const Point& towards, std::uint32_t rank) const;
