@@ -32,11 +32,17 @@ SteinerRepair::CornerKey key_of(const Boundary& b, const std::vector<SplitLine>&
                                   : CornerKey{corner_line(c) + 1, q, p};
 }
 
-/// The tasks a pass of the repair over `items` triangles or edges takes: one per 1,024, at most
-/// one a partition.
+/// Items a task of the repair's passes and sorts takes at least. The repair's arrays are a few
+/// thousand long where many lines cross many holes (the holes grid at 16 partitions: 4,000-6,000
+/// corners, edges and uses): a task per 1,024 left 3-6 tasks a pass, and the passes' longest
+/// tasks were a tenth of the projected time at 16 threads.
+constexpr std::size_t repair_grain = 256;
+
+/// The tasks a pass of the repair over `items` triangles or edges takes: one per repair_grain,
+/// at most one a partition.
 std::size_t repair_tasks(std::size_t items, const RunContext& ctx) {
   if (!PEAR_HAS_THREADS) return 1;  // one loop a pass, and the bucketed check left out
-  return std::clamp<std::size_t>(items / 1024, 1, std::max(1u, ctx.partitions));
+  return std::clamp<std::size_t>(items / repair_grain, 1, std::max(1u, ctx.partitions));
 }
 
 /// Appends every Steiner point, as a corner, to `corners`.
@@ -73,7 +79,7 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
     for (const SteinerTriangle& t : triangles) corners.insert(corners.end(), t.begin(), t.end());
   });
   sort_in_parts(ctx, "find Steiner holes: sort corners", "find Steiner holes: merge corners",
-                corners, std::less<>{});
+                corners, std::less<>{}, repair_grain);
   std::vector<std::pair<CornerKey, PieceCorner>>& keyed = keyed_;
   ctx.run_serial_if_threads("find Steiner holes: unique", [&] {
     corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
@@ -86,7 +92,7 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
       keyed[i] = {key_of(b, lines, corners[i]), corners[i]};
   });
   sort_in_parts(ctx, "find Steiner holes: sort keys", "find Steiner holes: merge keys", keyed,
-                std::less<>{});
+                std::less<>{}, repair_grain);
   ctx.run_serial_if_threads("find Steiner holes: group", [&] {
     canonical_.resize(keyed.size());
     for (std::size_t i = 0, first = 0; i < keyed.size(); ++i) {
@@ -95,7 +101,7 @@ void SteinerRepair::canonical_corners(const Boundary& b, const std::vector<Split
     }
   });
   sort_in_parts(ctx, "find Steiner holes: sort canonical", "find Steiner holes: merge canonical",
-                canonical_, std::less<>{});
+                canonical_, std::less<>{}, repair_grain);
 }
 
 PieceCorner SteinerRepair::canonical(PieceCorner c) const {
@@ -184,10 +190,12 @@ bool SteinerRepair::index_edges(const RunContext& ctx) {
       for (std::uint32_t c = 0; c < 3; ++c)
         edges_[3 * t + c] = {triangles_[t][c], triangles_[t][(c + 1) % 3], 3 * t + c};
   });
-  sort_in_parts(ctx, "find Steiner holes: sort edges", "find Steiner holes: merge edges", edges_,
-                [](const DirectedEdge& p, const DirectedEdge& q) {
-                  return p.from < q.from || (p.from == q.from && p.to < q.to);
-                });
+  sort_in_parts(
+      ctx, "find Steiner holes: sort edges", "find Steiner holes: merge edges", edges_,
+      [](const DirectedEdge& p, const DirectedEdge& q) {
+        return p.from < q.from || (p.from == q.from && p.to < q.to);
+      },
+      repair_grain);
   bool repeats = false;
   ctx.run_serial_if_threads("find Steiner holes: repeats", [&] {
     for (std::size_t i = 1; i < edges_.size() && !repeats; ++i)
@@ -310,14 +318,15 @@ void SteinerRepair::sort_steiner_points(const Boundary& b, const std::vector<Spl
   const auto point = [&](PieceCorner c) -> const SteinerPoint& {
     return lines[corner_line(c)].steiner[corner_index(c)];
   };
-  sort_in_parts(ctx, "check Steiner holes: sort", "check Steiner holes: merge", steiner_,
-                [&](PieceCorner p, PieceCorner q) {
-                  const SteinerPoint &s = point(p), &t = point(q);
-                  if (s.from != t.from || s.to != t.to)
-                    return s.from < t.from || (s.from == t.from && s.to < t.to);
-                  return s.pos.x != t.pos.x &&
-                         (s.pos.x < t.pos.x) == (b.pos[s.from].x < b.pos[s.to].x);
-                });
+  sort_in_parts(
+      ctx, "check Steiner holes: sort", "check Steiner holes: merge", steiner_,
+      [&](PieceCorner p, PieceCorner q) {
+        const SteinerPoint &s = point(p), &t = point(q);
+        if (s.from != t.from || s.to != t.to)
+          return s.from < t.from || (s.from == t.from && s.to < t.to);
+        return s.pos.x != t.pos.x && (s.pos.x < t.pos.x) == (b.pos[s.from].x < b.pos[s.to].x);
+      },
+      repair_grain);
 }
 
 /// The chains' terms of steiner_[from, to): each split input edge + (a -> s1 -> ... -> b) -
