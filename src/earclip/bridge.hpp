@@ -11,6 +11,7 @@
 #include "core/fill_vector.hpp"
 #include "core/stage.hpp"
 #include "geometry/uniform_grid.hpp"
+#include "pear/config.hpp"
 
 namespace pear::detail {
 
@@ -136,7 +137,12 @@ class HoleBridger {
   Attachment find_scanned(std::uint32_t k, bool passes_hold);
   Attachment find_by_scan(std::uint32_t hole, std::uint32_t rank);
   std::uint32_t node_at_scanned(std::uint32_t original, const Point& towards) const;
-  void note_copy(std::uint32_t copy, std::uint32_t of);
+  /// A splice added a node at the position of `of` (an input node or a copy): while joining
+  /// without a grid, the input node it copies (its id is first_copy_ + copy_of_.size()).
+  void note_copy(std::uint32_t of) {
+    if (PEAR_HAS_THREADS && !gridded_)
+      copy_of_.push_back(of < first_copy_ ? of : copy_of_[of - first_copy_]);
+  }
   void build_grid(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void fill_cells(std::uint32_t nodes);
   void build_grid_in_parts(const CleanPolygon& polygon, const RunContext& ctx);

@@ -309,11 +309,4 @@ std::uint32_t HoleBridger::node_at_scanned(std::uint32_t original, const Point& 
   return original;
 }
 
-/// A splice added node `copy` at the position of `of` (an input node or a copy).
-void HoleBridger::note_copy(std::uint32_t copy, std::uint32_t of) {
-  if (!PEAR_HAS_THREADS || gridded_) return;
-  copy_of_.push_back(of < first_copy_ ? of : copy_of_[of - first_copy_]);
-  (void)copy;  // ids follow in order: copy == first_copy_ + copy_of_.size() - 1
-}
-
 }  // namespace pear::detail
