@@ -33,6 +33,13 @@ struct Boundary {
     prev.clear();
     next.clear();
   }
+  /// `nodes` nodes; new ones unwritten (their ids handed out before they are filled).
+  void resize(std::size_t nodes) {
+    pos.resize(nodes);
+    vertex.resize(nodes);
+    prev.resize(nodes);
+    next.resize(nodes);
+  }
   std::uint32_t add(Point p, std::uint32_t caller_index) {
     pos.push_back(p);
     vertex.push_back(caller_index);

@@ -21,8 +21,10 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   changed_cells_.clear();
   if (polygon.ring_count() < 2) return unjoined;
   b_ = &boundary;
+  apart_ = apart;
+  bridges_waiting_ = false;
   // Not in a build without threads: the WebAssembly module's budget (9 KB; the same boundary).
-  if (PEAR_HAS_THREADS && apart && polygon.ring_count() - 1 <= scanned_holes) {
+  if (PEAR_HAS_THREADS && apart && polygon.ring_count() - 1 <= scan_limit_) {
     join_scanned(polygon, ctx, in_parts, unjoined);
     return unjoined;
   }
@@ -41,6 +43,7 @@ std::vector<std::uint32_t> HoleBridger::join(const CleanPolygon& polygon, Bounda
   find_all(ctx);
   index_found_bridges(ctx);
   ctx.run_serial("bridge: splice", [&] { splice_all(polygon, true, unjoined); });
+  if (bridges_waiting_) finish_waiting(&ctx);
   return unjoined;
 }
 
@@ -120,8 +123,22 @@ void HoleBridger::splice_all(const CleanPolygon& polygon, bool found_in_parallel
   bool stale = false;  // found_ was computed with a ring that is now left out
   found_in_parallel = PEAR_HAS_THREADS && found_in_parallel;  // the .wasm keeps no such path
   reserve_for_splices();
-  if (found_in_parallel) changed_cells_.assign(node_cells_.head.size(), 0);
-  for (std::size_t k = 0; k < holes_.size(); ++k) {
+  std::size_t first = 0;
+  if (found_in_parallel) {  // no column lists an added edge yet
+    row_words_ = (static_cast<std::size_t>(frame_.nx) + 63) / 64;
+    added_columns_.assign(row_words_ * static_cast<std::size_t>(frame_.ny), 0);
+  } else {
+    added_columns_.clear();
+  }
+  if (found_in_parallel && apart_) {
+    // The bridges wait and are made as tasks after (join); where the rings turn out to touch,
+    // the rest from hole `first` on as below.
+    bridges_waiting_ = splice_apart(polygon, unjoined, first, stale);
+    if (bridges_waiting_) return;
+  } else if (found_in_parallel) {
+    changed_cells_.assign(node_cells_.head.size(), 0);
+  }
+  for (std::size_t k = first; k < holes_.size(); ++k) {
     const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
     Attachment at;
     bool node_known = true;              // at.node is what node_at would say now
@@ -227,12 +244,28 @@ bool HoleBridger::any_found_bridge_crosses(std::uint32_t k) const {
 /// columns short of the hit's) lists an added edge: the added lists hold only the bridges of
 /// holes found again, in a few cells, so most walks need not be made.
 bool HoleBridger::any_added_near_ray(const Point& h, const RayHit& hit) const {
-  const std::size_t row_start = frame_.cell(0, frame_.row(h.y));
   const int first = hit.edge == UINT32_MAX ? 0 : std::max(0, frame_.column(hit.x) - 4);
-  const std::uint32_t* head = edge_cells_.head.data() + row_start;
-  bool any = false;
-  for (int col = first; col <= frame_.column(h.x); ++col) any |= head[col] != UINT32_MAX;
+  const int last = frame_.column(h.x);
+  if (first > last) return false;
+  // The row's bits of the columns whose cells list an added edge, a word at a time.
+  const std::uint64_t* row = added_columns_.data() + std::size_t(frame_.row(h.y)) * row_words_;
+  const int w0 = first / 64, w1 = last / 64;
+  const std::uint64_t low = ~std::uint64_t{0} << (first % 64);
+  const std::uint64_t high = ~std::uint64_t{0} >> (63 - last % 64);
+  if (w0 == w1) return (row[w0] & low & high) != 0;
+  bool any = (row[w0] & low) != 0 || (row[w1] & high) != 0;
+  for (int w = w0 + 1; w < w1 && !any; ++w) any = row[w] != 0;
   return any;
+}
+
+/// Lists added edge `id` in `cell`, and notes the cell's column in its row for
+/// any_added_near_ray.
+void HoleBridger::list_added_edge(std::size_t cell, std::uint32_t id) {
+  edge_cells_.add(cell, id);
+  if (!PEAR_HAS_THREADS || added_columns_.empty()) return;
+  const std::size_t row = cell / static_cast<std::size_t>(frame_.nx);
+  const std::size_t column = cell % static_cast<std::size_t>(frame_.nx);
+  added_columns_[row * row_words_ + column / 64] |= std::uint64_t{1} << (column % 64);
 }
 
 /// Whether a bridge (an added edge) crosses the ray from h where the serial search would meet
@@ -320,8 +353,8 @@ void HoleBridger::insert_edges(std::uint32_t start, std::uint32_t back) {
     return;
   }
   frame_.for_each_cell_on_segment(b_->pos[start], b_->pos[b_->next[start]], [&](std::size_t cell) {
-    edge_cells_.add(cell, first);
-    if (second != UINT32_MAX) edge_cells_.add(cell, second);
+    list_added_edge(cell, first);
+    if (second != UINT32_MAX) list_added_edge(cell, second);
   });
 }
 

@@ -48,6 +48,10 @@ class HoleBridger {
                                   const RunContext& ctx = RunContext{}, bool in_parts = false,
                                   bool apart = false);
 
+  /// Up to how many holes on rings apart are joined without a grid (scanned_holes; tests
+  /// set 0 to take the grid's path there).
+  void scan_up_to(std::size_t holes) { scan_limit_ = holes; }
+
   /// Holes whose attachment the parallel search found and the splice had to find again (an
   /// earlier bridge crossed its ray): for tests and the profile's notes.
   std::size_t redone() const { return redone_; }
@@ -130,6 +134,22 @@ class HoleBridger {
     bool better(const Point& v) const;
     void consider(const Point& v, std::uint32_t node);
   };
+  // The splice after the search in parts, on rings apart (bridge_splice.cpp).
+  struct WaitingBridge {
+    std::uint32_t target, hole;
+    std::uint32_t node, edge, repeat;    ///< the first ids it takes (two nodes, two edges, four)
+    std::array<std::uint32_t, 5> marks;  ///< the nodes it writes or whose lists it changes
+    bool made;
+  };
+  bool splice_apart(const CleanPolygon& polygon, std::vector<std::uint32_t>& unjoined,
+                    std::size_t& k, bool& stale);
+  void wait_or_make(std::uint32_t target, std::uint32_t hole, std::uint32_t indexed);
+  void make_bridge(WaitingBridge& w);
+  void settle(std::uint32_t node);
+  void finish_waiting(const RunContext* ctx);
+  std::uint32_t input_node(std::uint32_t node) const;
+  std::uint32_t node_at_apart(const Point& p, const Point& towards, std::uint32_t rank);
+  Attachment find_apart(std::uint32_t hole, std::uint32_t rank);
   void join_scanned(const CleanPolygon& polygon, const RunContext& ctx, bool in_parts,
                     std::vector<std::uint32_t>& unjoined);
   void cast_all(const RunContext& ctx, std::size_t tasks);
@@ -163,6 +183,7 @@ class HoleBridger {
   bool any_on_ray(const Point& h, const RayHit& hit, Crosses&& crosses_in_cell) const;
   bool any_found_bridge_crosses(std::uint32_t k) const;
   bool any_added_near_ray(const Point& h, const RayHit& hit) const;
+  void list_added_edge(std::size_t cell, std::uint32_t id);
   bool crossed_by_bridge(const Point& h, const RayHit& hit, bool found_bridges) const;
   template <class Visit>
   void for_each_indexed_bridge(std::size_t cell, Visit&& visit) const;
@@ -214,6 +235,10 @@ class HoleBridger {
   /// In the parallel splice: the node cells where a splice added a node or turned a node's
   /// sector (a node found there by the search must be looked up again).
   std::vector<std::uint8_t> changed_cells_;
+  /// In the splice after the search in parts: per row of the grid, a bit per column whose
+  /// cell lists an added edge (row_words_ words a row).
+  std::vector<std::uint64_t> added_columns_;
+  std::size_t row_words_ = 0;
   bool edges_split_ = false;  ///< a splice ran the boundary through an edge: ids moved
   /// Whether the grid lists what splices add (false while joining without one).
   bool gridded_ = true;
@@ -226,6 +251,18 @@ class HoleBridger {
   std::uint32_t first_copy_ = 0;  ///< the id of the first node a splice adds
   std::vector<std::uint32_t> added_edges_;
   std::vector<std::uint32_t> copy_of_;
+  /// The splice in parts on rings apart: whether it runs; per node the bridge waiting on it
+  /// (its index in waiting_), or whether a splice changed it; per input node its newest copy
+  /// and per copy the one before and its input node; per bridge made from the search (edge
+  /// ids from first_edge_, two a bridge) its entry in waiting_; the next node, edge and
+  /// repeated_ ids to hand out.
+  std::size_t scan_limit_ = scanned_holes;
+  bool apart_ = false, bridges_waiting_ = false;
+  std::vector<WaitingBridge> waiting_;
+  FillVector<std::uint32_t> pending_, copy_head_;
+  FillVector<std::uint32_t> copy_next_, copy_input_, edge_bridge_;
+  std::uint32_t first_edge_ = 0;
+  std::array<std::uint32_t, 3> next_ids_{};
   std::size_t redone_ = 0;
   std::vector<std::uint32_t> repeated_;
 };

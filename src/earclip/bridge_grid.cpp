@@ -132,6 +132,12 @@ void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunCont
   out_edge_.reserve(most_ids());
   edge_start_.resize(nodes);
   out_edge_.resize(nodes);
+  // The splice on rings apart marks nodes (bridge_splice.cpp): every node and copy unmarked.
+  const std::size_t copies = apart_ ? most_ids() - nodes : 0;
+  if (apart_) {
+    regrow_unfilled(pending_, nodes + copies);
+    regrow_unfilled(copy_head_, nodes);
+  }
   ctx.run_tasks("bridge: grid extent", tasks, [&](std::size_t t) {
     Point lo = polygon.points[first(t)], hi = lo;
     for (std::uint32_t v = first(t); v < first(t + 1); ++v) {
@@ -141,6 +147,13 @@ void HoleBridger::build_grid_in_parts(const CleanPolygon& polygon, const RunCont
       edge_start_[v] = out_edge_[v] = v;
     }
     extents[t] = {lo, hi};
+    if (!apart_) return;
+    std::fill(pending_.begin() + first(t), pending_.begin() + first(t + 1), UINT32_MAX);
+    std::fill(copy_head_.begin() + first(t), copy_head_.begin() + first(t + 1), UINT32_MAX);
+    std::fill(
+        pending_.begin() + static_cast<std::ptrdiff_t>(nodes + part_begin(copies, tasks, t)),
+        pending_.begin() + static_cast<std::ptrdiff_t>(nodes + part_begin(copies, tasks, t + 1)),
+        UINT32_MAX);
   });
   Point lo = extents[0].first, hi = extents[0].second;
   for (const auto& [l, h] : extents) {
