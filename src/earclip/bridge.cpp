@@ -438,8 +438,8 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
   mark_changed(target_cell);
   mark_changed(hole_cell);
   const auto [target_copy, hole_copy] = b.add_diagonal(target, hole);
-  note_copy(target);  // target_copy
-  note_copy(hole);    // hole_copy
+  note_copy(target_copy, target);
+  note_copy(hole_copy, hole);
   repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
   // The edge that left `target` now leaves its copy; the bridge leaves `target`.
   const std::uint32_t old_edge = out_edge_[target];
@@ -478,7 +478,7 @@ void HoleBridger::splice_into_edge(std::uint32_t edge, std::uint32_t hole) {
   const std::uint32_t start = edge_start_[edge], end = b.next[start];
   for (const std::uint32_t node : {start, end, hole}) mark_changed(cell_of(node));
   const std::uint32_t entry = b.copy(hole), before_hole = b.prev[hole];
-  note_copy(hole);  // entry
+  note_copy(entry, hole);
   repeated_.insert(repeated_.end(), {hole, entry});
   b.link(start, entry);
   b.link(entry, b.next[hole]);

@@ -156,12 +156,12 @@ class HoleBridger {
   void sight_all(const RunContext& ctx, std::size_t tasks);
   Attachment find_scanned(std::uint32_t k, bool passes_hold);
   Attachment find_by_scan(std::uint32_t hole, std::uint32_t rank);
-  std::uint32_t node_at_scanned(std::uint32_t original, const Point& towards) const;
-  /// A splice added a node at the position of `of` (an input node or a copy): while joining
-  /// without a grid, the input node it copies (its id is first_copy_ + copy_of_.size()).
-  void note_copy(std::uint32_t of) {
-    if (PEAR_HAS_THREADS && !gridded_)
-      copy_of_.push_back(of < first_copy_ ? of : copy_of_[of - first_copy_]);
+  std::uint32_t node_holding(std::uint32_t input, const Point& towards, bool settling);
+  void list_copy(std::uint32_t copy, std::uint32_t of);
+  /// A splice added `copy` at the position of `of` (an input node or a copy): listed with
+  /// its input node's copies while joining without a grid (the grid lists it in its cell).
+  void note_copy(std::uint32_t copy, std::uint32_t of) {
+    if (PEAR_HAS_THREADS && !gridded_) list_copy(copy, of);
   }
   void build_grid(const CleanPolygon& polygon, const RunContext& ctx, bool parallel);
   void fill_cells(std::uint32_t nodes);
@@ -243,24 +243,24 @@ class HoleBridger {
   /// Whether the grid lists what splices add (false while joining without one).
   bool gridded_ = true;
   /// Without a grid: per hole (by rank - 1) its ray's hit on the rings and the vertex it sees,
-  /// from the passes; the edges splices added; the nodes splices copied, each with the input
-  /// node at its position (ids from the node count on, in order).
+  /// from the passes; the edges splices added.
+  std::size_t scan_limit_ = scanned_holes;
   std::vector<RayHit> scanned_hits_;
   std::vector<Sight> sights_;  ///< per task and hole while the passes run
   std::vector<std::uint32_t> seen_node_;
-  std::uint32_t first_copy_ = 0;  ///< the id of the first node a splice adds
   std::vector<std::uint32_t> added_edges_;
-  std::vector<std::uint32_t> copy_of_;
+  /// Where no two input nodes share a position (joined without a grid, or the splice in parts
+  /// on rings apart): per input node its newest copy, per copy (ids from first_copy_ on) the
+  /// one before and its input node.
+  std::uint32_t first_copy_ = 0;
+  FillVector<std::uint32_t> copy_head_, copy_next_, copy_input_;
   /// The splice in parts on rings apart: whether it runs; per node the bridge waiting on it
-  /// (its index in waiting_), or whether a splice changed it; per input node its newest copy
-  /// and per copy the one before and its input node; per bridge made from the search (edge
-  /// ids from first_edge_, two a bridge) its entry in waiting_; the next node, edge and
+  /// (its index in waiting_), or whether a splice changed it; per bridge made from the search
+  /// (edge ids from first_edge_, two a bridge) its entry in waiting_; the next node, edge and
   /// repeated_ ids to hand out.
-  std::size_t scan_limit_ = scanned_holes;
   bool apart_ = false, bridges_waiting_ = false;
   std::vector<WaitingBridge> waiting_;
-  FillVector<std::uint32_t> pending_, copy_head_;
-  FillVector<std::uint32_t> copy_next_, copy_input_, edge_bridge_;
+  FillVector<std::uint32_t> pending_, edge_bridge_;
   std::uint32_t first_edge_ = 0;
   std::array<std::uint32_t, 3> next_ids_{};
   std::size_t redone_ = 0;

@@ -116,6 +116,7 @@ void HoleBridger::join_scanned(const CleanPolygon& polygon, const RunContext& ct
     out_edge_.reserve(most_ids());
     regrow_unfilled(edge_start_, nodes);
     regrow_unfilled(out_edge_, nodes);
+    regrow_unfilled(copy_head_, nodes);
     cast_all(steps, tasks);
     sight_all(steps, tasks);
   };
@@ -123,8 +124,9 @@ void HoleBridger::join_scanned(const CleanPolygon& polygon, const RunContext& ct
     reserve_for_splices();
     gridded_ = false;
     added_edges_.clear();
-    copy_of_.clear();
     first_copy_ = b_->size();
+    regrow_unfilled(copy_input_, 2 * holes_.size());  // each entry written before it is read
+    regrow_unfilled(copy_next_, 2 * holes_.size());
     bool passes_hold = true;  // what the passes found still stands but for added edges
     for (std::size_t k = 0; k < holes_.size(); ++k) {
       const std::uint32_t hole = holes_[k].leftmost, rank = static_cast<std::uint32_t>(k + 1);
@@ -175,6 +177,7 @@ void HoleBridger::cast_all(const RunContext& ctx, std::size_t tasks) {
     const auto end = static_cast<std::uint32_t>(part_begin(nodes, tasks, t + 1));
     for (auto v = static_cast<std::uint32_t>(part_begin(nodes, tasks, t)); v < end; ++v) {
       edge_start_[v] = out_edge_[v] = v;
+      copy_head_[v] = UINT32_MAX;  // no copy yet
       const Point &p = b.pos[v], &q = b.pos[b.next[v]];
       const double lo = std::min(p.y, q.y), hi = std::max(p.y, q.y);
       if (hi < low || lo > high) continue;
@@ -270,7 +273,7 @@ HoleBridger::Attachment HoleBridger::find_scanned(std::uint32_t k, bool passes_h
   at.hit.x = std::min(at.hit.x, h.x);  // rounding may put a crossing a hair right of h
   if (at.hit.touching_edge != UINT32_MAX || at.hit.edge == UINT32_MAX) return at;
   at.target = b_->pos[seen_node_[k]];
-  at.node = node_at_scanned(seen_node_[k], h);
+  at.node = node_holding(seen_node_[k], h, false);
   return at;
 }
 
@@ -293,20 +296,8 @@ HoleBridger::Attachment HoleBridger::find_by_scan(std::uint32_t hole, std::uint3
   for (std::uint32_t node = 0; sight.open && node < b_->size(); ++node)
     if (merged(node, rank)) sight.consider(b_->pos[node], node);
   at.target = sight.best;
-  const std::uint32_t seen = sight.best_node;
-  at.node = node_at_scanned(seen < first_copy_ ? seen : copy_of_[seen - first_copy_], h);
+  at.node = node_holding(input_node(sight.best_node), h, false);
   return at;
-}
-
-/// node_at without a grid: `original` (an input node, the only one at its position), then the
-/// copies splices made of it, the newest first.
-std::uint32_t HoleBridger::node_at_scanned(std::uint32_t original, const Point& towards) const {
-  if (b_->sector_contains(original, towards)) return original;
-  for (std::size_t i = copy_of_.size(); i-- > 0;) {
-    const auto node = static_cast<std::uint32_t>(first_copy_ + i);
-    if (copy_of_[i] == original && b_->sector_contains(node, towards)) return node;
-  }
-  return original;
 }
 
 }  // namespace pear::detail

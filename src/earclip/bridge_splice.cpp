@@ -27,6 +27,30 @@ std::uint32_t HoleBridger::input_node(std::uint32_t node) const {
   return node < first_copy_ ? node : copy_input_[node - first_copy_];
 }
 
+/// Lists `copy`, a node at the position of `of` (an input node or a copy), first among its input
+/// node's copies.
+void HoleBridger::list_copy(std::uint32_t copy, std::uint32_t of) {
+  const std::uint32_t input = input_node(of);
+  copy_input_[copy - first_copy_] = input;
+  copy_next_[copy - first_copy_] = copy_head_[input];
+  copy_head_[input] = copy;
+}
+
+/// Of `input` (the one input node at its position) and the copies splices made of it, the
+/// newest first (as the grid's lists give them), the first whose interior sector holds
+/// `towards`, else `input`: node_at's choice. `settling`: the bridges waiting on each node are
+/// made before its links are read.
+std::uint32_t HoleBridger::node_holding(std::uint32_t input, const Point& towards, bool settling) {
+  if (settling) settle(input);
+  if (b_->sector_contains(input, towards)) return input;
+  for (std::uint32_t copy = copy_head_[input]; copy != untouched;
+       copy = copy_next_[copy - first_copy_]) {
+    if (settling) settle(copy);
+    if (b_->sector_contains(copy, towards)) return copy;
+  }
+  return input;
+}
+
 /// Makes the bridge that waits on `node`, if one does.
 void HoleBridger::settle(std::uint32_t node) {
   const std::uint32_t waiting = pending_[node];
@@ -42,10 +66,7 @@ void HoleBridger::make_bridge(WaitingBridge& w) {
   for (const auto& [copy, of] : {std::pair{target_copy, target}, std::pair{hole_copy, hole}}) {
     b.pos[copy] = b.pos[of];
     b.vertex[copy] = b.vertex[of];
-    const std::uint32_t input = input_node(of);
-    copy_input_[copy - first_copy_] = input;
-    copy_next_[copy - first_copy_] = copy_head_[input];
-    copy_head_[input] = copy;
+    list_copy(copy, of);
   }
   const std::uint32_t after_target = b.next[target], before_hole = b.prev[hole];
   b.link(target, hole);
@@ -64,8 +85,7 @@ void HoleBridger::make_bridge(WaitingBridge& w) {
   w.made = true;
 }
 
-/// node_at where positions do not repeat: the input node at p, then its copies (the newest
-/// first, as the grid's lists give them), the bridges waiting on each made before it is read.
+/// node_at where positions do not repeat: the input node at p, or one of its copies.
 std::uint32_t HoleBridger::node_at_apart(const Point& p, const Point& towards, std::uint32_t rank) {
   std::uint32_t input = UINT32_MAX;
   const std::size_t cell = frame_.cell_of(p);
@@ -76,15 +96,7 @@ std::uint32_t HoleBridger::node_at_apart(const Point& p, const Point& towards, s
       break;
     }
   }
-  if (input == UINT32_MAX) return UINT32_MAX;
-  settle(input);
-  if (b_->sector_contains(input, towards)) return input;
-  for (std::uint32_t copy = copy_head_[input]; copy != untouched;
-       copy = copy_next_[copy - first_copy_]) {
-    settle(copy);
-    if (b_->sector_contains(copy, towards)) return copy;
-  }
-  return input;
+  return input == UINT32_MAX ? UINT32_MAX : node_holding(input, towards, true);
 }
 
 /// find() on the boundary as the serial splice has it, where no node lies at a hole's vertex:
