@@ -2,12 +2,31 @@
 // the clipping strategies): every ring of a cleaned polygon a cycle, nothing joined yet.
 #pragma once
 
-#include <cstdint>
+#include <gtest/gtest.h>
 
+#include <cstdint>
+#include <vector>
+
+#include "clean/clean.hpp"
 #include "core/boundary.hpp"
 #include "core/stage.hpp"
 
 namespace pear::detail::testing {
+
+/// The polygon as the engine cleans it (expected to be clean: status ok).
+inline CleanPolygon cleaned(const Polygon& polygon) {
+  std::vector<Point> points;
+  std::vector<std::uint32_t> offsets{0};
+  for (const Ring& ring : polygon) {
+    points.insert(points.end(), ring.begin(), ring.end());
+    offsets.push_back(static_cast<std::uint32_t>(points.size()));
+  }
+  CleanPolygon clean;
+  std::vector<Diagnostic> diagnostics;
+  EXPECT_EQ(clean_polygon(InputPolygon(PolygonView{points, offsets}), clean, diagnostics),
+            Status::ok);
+  return clean;
+}
 
 /// One node per clean vertex, each ring linked as a cycle (node i is clean vertex i).
 inline Boundary rings_as_cycles(const CleanPolygon& clean) {

@@ -27,19 +27,7 @@
 namespace pear::detail {
 namespace {
 
-CleanPolygon cleaned(const Polygon& polygon) {
-  std::vector<Point> points;
-  std::vector<std::uint32_t> offsets{0};
-  for (const Ring& ring : polygon) {
-    points.insert(points.end(), ring.begin(), ring.end());
-    offsets.push_back(static_cast<std::uint32_t>(points.size()));
-  }
-  CleanPolygon clean;
-  std::vector<Diagnostic> diagnostics;
-  EXPECT_EQ(clean_polygon(InputPolygon(PolygonView{points, offsets}), clean, diagnostics),
-            Status::ok);
-  return clean;
-}
+using testing::cleaned;
 
 struct Bridged {
   Boundary boundary;
@@ -101,6 +89,12 @@ void expect_same_boundary(const Bridged& joined, const Bridged& serial) {
 std::size_t expect_same_in_parts(const Polygon& polygon, bool check_crossings = true) {
   const CleanPolygon clean = cleaned(polygon);
   const Bridged serial = bridge(clean, RunContext{}, false);
+  if (serial.unjoined.empty()) {
+    EXPECT_EQ(testing::cycle_length(serial.boundary, 0), serial.boundary.size());
+    if (check_crossings) {
+      EXPECT_EQ(crossing_edges(serial.boundary), 0u);
+    }
+  }
   const bool scanned = apart(clean) && clean.ring_count() - 1 <= HoleBridger::scanned_holes;
   if (scanned) {
     SCOPED_TRACE("without a grid");

@@ -25,15 +25,7 @@
 namespace pear::detail {
 namespace {
 
-CleanPolygon cleaned(const Polygon& polygon) {
-  FlatPolygon flat;
-  flatten(polygon, flat);
-  CleanPolygon clean;
-  std::vector<Diagnostic> diagnostics;
-  EXPECT_EQ(clean_polygon(PolygonView{flat.points, flat.ring_starts}, clean, diagnostics),
-            Status::ok);
-  return clean;
-}
+using testing::cleaned;
 
 /// Every edge gets `extra` points inside it: collinear runs, the clipper's degenerate case.
 Polygon with_collinear_runs(const Polygon& polygon, int extra) {
