@@ -49,7 +49,9 @@ std::span<const DivideSlab> split_into_parts(const Boundary& b, std::vector<Spli
     std::vector<DivideSlab>& slabs = levels[level];
     std::vector<DivideSlab>& next = levels[level + 1];
     std::vector<std::uint8_t> ok(count, 1);
-    ctx.run_tasks("split", count, [&](std::size_t s) {
+    // The first cut, of the whole cycle, would be one serial task: its passes run in parts.
+    const bool whole = PEAR_HAS_THREADS && count == 1 && ctx.partitions > 1;
+    const auto cut = [&](std::size_t s) {
       const DivideSlab& slab = slabs[s];
       if (slab.lo == slab.hi) {
         next[first_child[s]] = slab;  // a copy into an array that keeps its size
@@ -61,8 +63,14 @@ std::span<const DivideSlab> split_into_parts(const Boundary& b, std::vector<Spli
       left.lo = slab.lo, left.hi = mid, right.lo = mid + 1, right.hi = slab.hi;
       for (Pieces* p : {&left.pieces, &right.pieces}) p->corners.clear(), p->starts.assign(1, 0);
       PieceSplitter splitter;
-      ok[s] = splitter.split(b, lines, mid, slab.pieces, left.pieces, right.pieces);
-    });
+      ok[s] = whole ? splitter.split_in_parts(b, lines, mid, slab.pieces, left.pieces, right.pieces,
+                                              ctx)
+                    : splitter.split(b, lines, mid, slab.pieces, left.pieces, right.pieces);
+    };
+    if (whole)
+      cut(0);  // its phases are the splitter's own
+    else
+      ctx.run_tasks("split", count, cut);
     if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return {};
     count = children;
   }

@@ -148,12 +148,26 @@ std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCo
 }
 
 bool PieceSplitter::place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
-                          const Pieces& in) {
+                          const Pieces& in, const RunContext* ctx) {
   SplitLine& split_line = lines[line];
+  const auto smallest_after = [&](std::size_t from, std::size_t to) {
+    double next = std::numeric_limits<double>::infinity();
+    for (std::size_t i = from; i < to; ++i) {
+      const double x = corner_pos(b, lines, in.corners[i]).x;
+      if (x > split_line.after && x < next) next = x;
+    }
+    return next;
+  };
   double next = std::numeric_limits<double>::infinity();
-  for (PieceCorner c : in.corners) {
-    const double x = corner_pos(b, lines, c).x;
-    if (x > split_line.after && x < next) next = x;
+  if (!PEAR_HAS_THREADS || ctx == nullptr) {
+    next = smallest_after(0, in.corners.size());
+  } else {
+    const std::size_t n = in.corners.size(), tasks = ctx->tasks_for(n, 4096);
+    std::vector<double> nexts(tasks);
+    ctx->run_tasks("split: place", tasks, [&](std::size_t t) {
+      nexts[t] = smallest_after(part_begin(n, tasks, t), part_begin(n, tasks, t + 1));
+    });
+    next = *std::min_element(nexts.begin(), nexts.end());
   }
   if (std::isinf(next)) return false;
   // Never through a vertex (paper §2.1): strictly between two consecutive corner x values.
@@ -164,32 +178,66 @@ bool PieceSplitter::place(const Boundary& b, std::vector<SplitLine>& lines, std:
   return true;
 }
 
+/// The crossing of the piece edge corners[i] -> corners[i + 1] (whose ends lie on the two sides
+/// of the line at x, corners[i] on the left where `u_left`) and its Steiner point; false where
+/// the input edge does not reach across the line.
+bool PieceSplitter::crossing_at(const Boundary& b, const std::vector<SplitLine>& lines,
+                                const PieceCorner* corners, std::uint32_t count, std::uint32_t i,
+                                bool u_left, double x, Crossing& c, SteinerPoint& s) const {
+  const PieceCorner u = corners[i], v = corners[i + 1 == count ? 0 : i + 1];
+  // Only sub-segments of input edges cross: split segments are vertical on other lines.
+  const std::uint32_t from =
+      is_steiner(u) ? lines[corner_line(u)].steiner[corner_index(u)].from : corner_index(u);
+  const std::uint32_t to =
+      is_steiner(v) ? lines[corner_line(v)].steiner[corner_index(v)].to : corner_index(v);
+  const Point& a = b.pos[from];
+  const Point& e = b.pos[to];
+  const Point low = a.x < e.x ? a : e, high = a.x < e.x ? e : a;
+  if (!(low.x < x && x < high.x)) return false;
+  s = {from, to, {x, rounded_y(low, high, x)}};
+  c = {i, 0, low, high, u_left, 0};
+  return true;
+}
+
 bool PieceSplitter::find_crossings(const Boundary& b, std::vector<SplitLine>& lines,
                                    std::uint32_t line, const PieceCorner* corners,
-                                   std::uint32_t count) {
-  crossings_.clear();
+                                   std::uint32_t count, const RunContext* ctx) {
   const double x = lines[line].x;
-  const bool first_left = corner_pos(b, lines, corners[0]).x < x;
-  bool v_left = first_left;  // each corner's side is computed once
-  for (std::uint32_t i = 0; i < count; ++i) {
-    const PieceCorner u = corners[i], v = corners[i + 1 == count ? 0 : i + 1];
-    const bool u_left = v_left;
-    v_left = i + 1 == count ? first_left : corner_pos(b, lines, v).x < x;
-    if (u_left == v_left) continue;
-    // Only sub-segments of input edges cross: split segments are vertical on other lines.
-    const std::uint32_t from =
-        is_steiner(u) ? lines[corner_line(u)].steiner[corner_index(u)].from : corner_index(u);
-    const std::uint32_t to =
-        is_steiner(v) ? lines[corner_line(v)].steiner[corner_index(v)].to : corner_index(v);
-    const Point& a = b.pos[from];
-    const Point& c = b.pos[to];
-    const Point low = a.x < c.x ? a : c, high = a.x < c.x ? c : a;
-    if (!(low.x < x && x < high.x)) return false;
-    std::vector<SteinerPoint>& steiner = lines[line].steiner;
-    const PieceCorner corner = steiner_corner(line, static_cast<std::uint32_t>(steiner.size()));
-    steiner.push_back({from, to, {x, rounded_y(low, high, x)}});
-    crossings_.push_back({i, corner, low, high, u_left, 0});
-  }
+  const std::size_t tasks = !PEAR_HAS_THREADS || ctx == nullptr ? 1 : ctx->tasks_for(count, 4096);
+  found_.resize(std::max(found_.size(), tasks));
+  std::vector<std::uint8_t> ok(tasks, 1);
+  // Each task's edges in order, each corner's side computed once (the first's twice).
+  const auto find = [&](std::size_t t) {
+    auto& mine = found_[t];
+    mine.clear();
+    const auto first = static_cast<std::uint32_t>(part_begin(count, tasks, t));
+    const auto end = static_cast<std::uint32_t>(part_begin(count, tasks, t + 1));
+    bool v_left = first < end && corner_pos(b, lines, corners[first]).x < x;
+    for (std::uint32_t i = first; i < end; ++i) {
+      const bool u_left = v_left;
+      v_left = corner_pos(b, lines, corners[i + 1 == count ? 0 : i + 1]).x < x;
+      if (u_left == v_left) continue;
+      auto& [c, s] = mine.emplace_back();
+      if (!crossing_at(b, lines, corners, count, i, u_left, x, c, s)) {
+        ok[t] = 0;
+        return;
+      }
+    }
+  };
+  if (!PEAR_HAS_THREADS || ctx == nullptr)
+    find(0);
+  else
+    ctx->run_tasks("split: crossings", tasks, find);
+  if (std::find(ok.begin(), ok.end(), 0) != ok.end()) return false;
+  // The Steiner points numbered in cycle order, as one pass would.
+  crossings_.clear();
+  std::vector<SteinerPoint>& steiner = lines[line].steiner;
+  for (std::size_t t = 0; t < tasks; ++t)
+    for (auto& [c, s] : found_[t]) {
+      c.steiner = steiner_corner(line, static_cast<std::uint32_t>(steiner.size()));
+      steiner.push_back(s);
+      crossings_.push_back(c);
+    }
   return true;
 }
 
@@ -235,30 +283,62 @@ bool PieceSplitter::pair_crossings(const std::vector<SplitLine>& lines, std::uin
 
 /// Walks the pieces on one side: a chain of the cycle on that side, then along the line to the
 /// partner crossing (upward on the left side, downward on the right), the next chain, and so on.
+/// The walk plans the runs and where each goes; their corners are then copied (in tasks of ctx,
+/// by equal shares of the output: one run may be most of the cycle).
 bool PieceSplitter::emit(const PieceCorner* corners, std::uint32_t count, bool left_side,
-                         Pieces& out) {
+                         Pieces& out, const RunContext* ctx) {
   const std::uint32_t total = static_cast<std::uint32_t>(crossings_.size());
   used_.assign(total, 0);
+  runs_.clear();
+  piece_ends_.clear();
+  planned_ = 0;
   for (std::uint32_t first = 0; first < total; ++first) {
     // The chain after a rightward crossing lies right of the line.
     if (crossings_[first].rightward == left_side || used_[first]) continue;
     std::uint32_t k = first;
     do {
       used_[k] = 1;
-      out.corners.push_back(crossings_[k].steiner);
       const std::uint32_t end = k + 1 == total ? 0 : k + 1;
-      for (std::uint32_t i = crossings_[k].at;;) {
-        i = i + 1 == count ? 0 : i + 1;
-        out.corners.push_back(corners[i]);
-        if (i == crossings_[end].at) break;
-      }
-      out.corners.push_back(crossings_[end].steiner);
+      const std::uint32_t at = crossings_[k].at, to = crossings_[end].at;
+      runs_.push_back({k, end, planned_});
+      planned_ += 2 + (to > at ? to - at : to + count - at);  // the corners after at, to `to`
       k = crossings_[end].partner;
     } while (!used_[k]);
     if (k != first) return false;
-    out.close_piece();
+    piece_ends_.push_back(planned_);
   }
+  const std::size_t base = out.corners.size();
+  out.corners.resize(base + planned_);
+  PieceCorner* written = out.corners.data() + base;
+  if (!PEAR_HAS_THREADS || ctx == nullptr) {
+    fill_runs(corners, count, written, 0, planned_);
+  } else {
+    const std::size_t tasks = ctx->tasks_for(planned_, 4096);
+    ctx->run_tasks("split: pieces", tasks, [&](std::size_t t) {
+      fill_runs(corners, count, written, part_begin(planned_, tasks, t),
+                part_begin(planned_, tasks, t + 1));
+    });
+  }
+  for (const std::size_t end : piece_ends_)
+    out.starts.push_back(static_cast<std::uint32_t>(base + end));
   return true;
+}
+
+/// Writes output positions [from, to) of the planned runs.
+void PieceSplitter::fill_runs(const PieceCorner* corners, std::uint32_t count, PieceCorner* out,
+                              std::size_t from, std::size_t to) const {
+  std::size_t r = static_cast<std::size_t>(
+      std::upper_bound(runs_.begin(), runs_.end(), from,
+                       [](std::size_t o, const Run& run) { return o < run.out; }) -
+      runs_.begin() - 1);
+  for (std::size_t o = from; o < to; ++r) {
+    const Run& run = runs_[r];
+    const std::size_t last = (r + 1 < runs_.size() ? runs_[r + 1].out : planned_) - 1;
+    if (o == run.out) out[o++] = crossings_[run.crossing].steiner;
+    std::uint32_t i = crossings_[run.crossing].at + static_cast<std::uint32_t>(o - run.out);
+    for (; o < std::min(to, last); ++o, ++i) out[o] = corners[i >= count ? i - count : i];
+    if (o == last && o < to) out[o++] = crossings_[run.end].steiner;
+  }
 }
 
 bool PieceSplitter::split(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
@@ -282,6 +362,28 @@ bool PieceSplitter::split(const Boundary& b, std::vector<SplitLine>& lines, std:
       return false;
   }
   return true;
+}
+
+bool PieceSplitter::split_in_parts(const Boundary& b, std::vector<SplitLine>& lines,
+                                   std::uint32_t line, const Pieces& in, Pieces& left,
+                                   Pieces& right, const RunContext& ctx) {
+  // A build without threads keeps one path (the .wasm's size).
+  if (!PEAR_HAS_THREADS || in.count() != 1) return split(b, lines, line, in, left, right);
+  const PieceCorner* corners = in.corners.data();
+  const auto count = static_cast<std::uint32_t>(in.corners.size());
+  if (!place(b, lines, line, in, &ctx)) {
+    append_piece(corners, count, left);
+    return true;
+  }
+  if (!find_crossings(b, lines, line, corners, count, &ctx)) return false;
+  if (crossings_.empty()) {
+    append_piece(corners, count, corner_pos(b, lines, corners[0]).x < lines[line].x ? left : right);
+    return true;
+  }
+  bool paired = false;
+  ctx.run_serial("split: pair", [&] { paired = pair_crossings(lines, line); });
+  return paired && emit(corners, count, true, left, &ctx) &&
+         emit(corners, count, false, right, &ctx);
 }
 
 }  // namespace pear::detail

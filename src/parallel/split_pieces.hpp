@@ -84,6 +84,11 @@ class PieceSplitter {
   /// false when the crossings of a piece do not pair up (the input is not weakly simple).
   bool split(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line, const Pieces& in,
              Pieces& left, Pieces& right);
+  /// split() of `in` as tasks of ctx (the first cut, of the whole cycle, where it would be one
+  /// serial task): the line's place and the crossings found in parts, the crossings paired,
+  /// the pieces' corners copied in parts. The same pieces and Steiner points as split().
+  bool split_in_parts(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
+                      const Pieces& in, Pieces& left, Pieces& right, const RunContext& ctx);
 
  private:
   struct Crossing {
@@ -93,16 +98,34 @@ class PieceSplitter {
     bool rightward;         ///< the edge runs from left to right: the interior is above
     std::uint32_t partner;  ///< the crossing at the other end of its interior segment
   };
-  bool place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
-             const Pieces& in);
+  /// A piece's run on one side of the line: the Steiner point of crossing `crossing`, the
+  /// corners after it up to crossing `end`'s edge, `end`'s Steiner point; written from `out`.
+  struct Run {
+    std::uint32_t crossing, end;
+    std::size_t out;
+  };
+  bool place(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line, const Pieces& in,
+             const RunContext* ctx = nullptr);
+  bool crossing_at(const Boundary& b, const std::vector<SplitLine>& lines,
+                   const PieceCorner* corners, std::uint32_t count, std::uint32_t i, bool u_left,
+                   double x, Crossing& c, SteinerPoint& s) const;
   bool find_crossings(const Boundary& b, std::vector<SplitLine>& lines, std::uint32_t line,
-                      const PieceCorner* corners, std::uint32_t count);
+                      const PieceCorner* corners, std::uint32_t count,
+                      const RunContext* ctx = nullptr);
   bool pair_crossings(const std::vector<SplitLine>& lines, std::uint32_t line);
-  bool emit(const PieceCorner* corners, std::uint32_t count, bool left_side, Pieces& out);
+  bool emit(const PieceCorner* corners, std::uint32_t count, bool left_side, Pieces& out,
+            const RunContext* ctx = nullptr);
+  void fill_runs(const PieceCorner* corners, std::uint32_t count, PieceCorner* out,
+                 std::size_t from, std::size_t to) const;
 
   std::vector<Crossing> crossings_;   ///< in cycle order
   std::vector<std::uint32_t> order_;  ///< crossings_ indices bottom to top along the line
   std::vector<std::uint8_t> used_;
+  std::vector<Run> runs_;    ///< emit's plan: the runs of one side, in output order
+  std::size_t planned_ = 0;  ///< their corners
+  std::vector<std::size_t> piece_ends_;
+  /// find_crossings in parts: each task's crossings and their Steiner points, in cycle order.
+  std::vector<std::vector<std::pair<Crossing, SteinerPoint>>> found_;
 };
 
 }  // namespace pear::detail
