@@ -257,7 +257,7 @@ bool split_clip_repair(const Boundary& b, std::vector<SplitLine>& lines, EarHeur
 /// a serial phase of every run in parts). False, `cycle` untouched, where that does not pay
 /// (one task, a build without threads, links that jump often): the caller walks.
 bool walk_cycle_in_parts(const Boundary& b, std::uint32_t entry, const RunContext& ctx,
-                         std::vector<PieceCorner>& cycle) {
+                         FillVector<PieceCorner>& cycle) {
   const std::size_t parts = link_tasks(b.size(), ctx.partitions);
   if (!PEAR_HAS_THREADS || parts < 2) return false;
   std::vector<std::uint32_t> jumps;
@@ -287,7 +287,7 @@ bool divide_and_conquer(Boundary& b, std::uint32_t entry, EarHeuristic heuristic
                         VariantScratchPtr& scratch, SharedPositions shared, double last_share) {
   if (!scratch) scratch.reset(new VariantScratch);
   if (scratch->slab_levels.empty()) scratch->slab_levels.emplace_back(1);
-  std::vector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
+  FillVector<PieceCorner>& cycle = scratch->slab_levels[0][0].pieces.corners;
   std::vector<SplitLine> lines;
   const bool walked = walk_cycle_in_parts(b, entry, ctx, cycle);
   if (!walked) {

@@ -107,7 +107,7 @@ std::size_t estimated_crossings(const CycleSample& sample, const std::vector<dou
 
 }  // namespace
 
-std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
+std::vector<double> split_positions(const Boundary& b, const FillVector<PieceCorner>& cycle,
                                     unsigned parts, const RunContext& ctx, double last_share) {
   // Quantiles of a sample of at most 2^14 x values: balanced enough, and O(n) to take.
   constexpr std::size_t sample_limit = std::size_t{1} << 14;

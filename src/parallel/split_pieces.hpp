@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/boundary.hpp"
+#include "core/fill_vector.hpp"
 #include "core/stage.hpp"
 
 namespace pear::detail {
@@ -45,7 +46,7 @@ struct SplitLine {
 
 /// Counterclockwise cycles of corners, one after another.
 struct Pieces {
-  std::vector<PieceCorner> corners;
+  FillVector<PieceCorner> corners;       ///< resize() leaves new corners to be written
   std::vector<std::uint32_t> starts{0};  ///< piece p is corners[starts[p], starts[p + 1])
 
   std::size_t count() const { return starts.size() - 1; }
@@ -73,7 +74,7 @@ inline std::size_t max_steiner_points(std::size_t nodes) {
 /// the cost stays within a small multiple of clipping the whole boundary. The sample and the
 /// count in tasks of ctx (phases "split lines: ..."); the same lines for any threads.
 /// `last_share`: the rightmost part's share of vertices against the others' (1: equal parts).
-std::vector<double> split_positions(const Boundary& b, const std::vector<PieceCorner>& cycle,
+std::vector<double> split_positions(const Boundary& b, const FillVector<PieceCorner>& cycle,
                                     unsigned parts, const RunContext& ctx, double last_share = 1);
 
 /// Splits pieces along one line; keeps its scratch memory between calls.
