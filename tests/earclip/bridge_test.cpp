@@ -216,6 +216,19 @@ TEST(BridgeInParts, HolesTouchingTheShellAndEachOther) {
   expect_same_in_parts(polygon);
 }
 
+TEST(BridgeInParts, HoleVertexInsideAnEdgeWithNoRepeatedPosition) {
+  // No two vertices share a position (apart, as a check that only looks for repeated positions
+  // says), but one hole's leftmost vertex lies inside the shell's left edge: the splice in parts
+  // on rings apart meets a ray through a vertex, makes what waits and hands the rest to the
+  // grid's splice (splice_apart returning false), with the same boundary.
+  Polygon polygon{{{0, 0}, {1000, 0}, {1000, 1000}, {0, 1000}}};
+  for (int k = 0; k < 4; ++k) polygon.push_back(square(100 + 150.0 * k, 100, 40));
+  polygon.push_back({{0, 500}, {40, 480}, {40, 520}});  // inside the edge (0, 1000)-(0, 0)
+  for (int k = 0; k < 4; ++k) polygon.push_back(square(100 + 150.0 * k, 800, 40));
+  ASSERT_TRUE(apart(cleaned(polygon)));
+  expect_same_in_parts(polygon);
+}
+
 TEST(BridgeInParts, TwoHolesTouchingTheShellAtOneVertex) {
   // Both holes touch the shell at (0, 500); the first one's splice turns the shell node's
   // sector there, so the second must splice at the first hole's node, not at the shell node
