@@ -61,12 +61,17 @@ struct Boundary {
   /// Returns the copies {of from, of to}.
   std::pair<std::uint32_t, std::uint32_t> add_diagonal(std::uint32_t from, std::uint32_t to) {
     const std::uint32_t from_copy = copy(from), to_copy = copy(to);
+    link_diagonal(from, to, from_copy, to_copy);
+    return {from_copy, to_copy};
+  }
+  /// add_diagonal's links, with copies already made (their ids handed out beforehand).
+  void link_diagonal(std::uint32_t from, std::uint32_t to, std::uint32_t from_copy,
+                     std::uint32_t to_copy) {
     const std::uint32_t after_from = next[from], before_to = prev[to];
     link(from, to);
     link(before_to, to_copy);
     link(to_copy, from_copy);
     link(from_copy, after_from);
-    return {from_copy, to_copy};
   }
 
   /// Turn at `node`: > 0 convex, < 0 reflex, 0 collinear (exact).

@@ -376,13 +376,7 @@ HoleBridger::RayHit HoleBridger::cast_left(const Point& h, std::uint32_t rank) c
   RayHit hit;
   hit.x = -std::numeric_limits<double>::infinity();
   const auto visit = [&](std::uint32_t id, const Point& a, const Point& b) {
-    double x = 0;
-    const Crossing c = edge_crossing(h, a, b, x);
-    if (c == Crossing::through) hit.touching_edge = std::min(hit.touching_edge, id);
-    if (c == Crossing::left && (x > hit.x || (x == hit.x && id < hit.edge))) {
-      hit.x = x;
-      hit.edge = id;
-    }
+    visit_edge(hit, h, id, a, b);
   };
   const int row = frame_.row(h.y);
   for (int col = frame_.column(h.x); col >= 0; --col) {
@@ -430,6 +424,14 @@ std::size_t HoleBridger::cell_of(std::uint32_t v) const {
   return !PEAR_HAS_THREADS || gridded_ ? frame_.cell_of(b_->pos[v]) : 0;
 }
 
+/// A bridge leaves `target` now: the edge that left it leaves its copy.
+void HoleBridger::hand_edge_to_copy(std::uint32_t target, std::uint32_t target_copy) {
+  const std::uint32_t old_edge = out_edge_[target];
+  edge_start_[old_edge] = target_copy;
+  out_edge_[target_copy] = old_edge;
+  out_edge_[target] = UINT32_MAX;
+}
+
 /// `indexed_hole`: the hole whose bridge as found this is (bridge_cells_ lists it), or none.
 void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
                                 std::uint32_t indexed_hole) {
@@ -441,11 +443,7 @@ void HoleBridger::splice_bridge(std::uint32_t target, std::uint32_t hole,
   note_copy(target_copy, target);
   note_copy(hole_copy, hole);
   repeated_.insert(repeated_.end(), {target, hole, target_copy, hole_copy});
-  // The edge that left `target` now leaves its copy; the bridge leaves `target`.
-  const std::uint32_t old_edge = out_edge_[target];
-  edge_start_[old_edge] = target_copy;
-  out_edge_[target_copy] = old_edge;
-  out_edge_[target] = UINT32_MAX;
+  hand_edge_to_copy(target, target_copy);
   if (!PEAR_HAS_THREADS || indexed_hole == UINT32_MAX) {
     insert_edges(target, hole_copy);
   } else {  // the same ids as insert_edges gives, the cells already listed

@@ -190,6 +190,7 @@ class HoleBridger {
   bool attach(std::uint32_t hole, const Attachment& at, std::uint32_t rank, bool node_known,
               std::uint32_t indexed);
   void mark_changed(std::size_t cell);
+  void hand_edge_to_copy(std::uint32_t target, std::uint32_t target_copy);
   std::size_t cell_of(std::uint32_t v) const;
   /// The most node or edge ids a join can end with: a bridge adds two nodes and two edges, a
   /// hole joined inside an edge one of each.

@@ -43,20 +43,8 @@ struct YBuckets {
 template <class Hit>
 void keep_nearer(Hit& hit, const Hit& other) {
   hit.touching_edge = std::min(hit.touching_edge, other.touching_edge);
-  if (other.edge != UINT32_MAX &&
-      (hit.edge == UINT32_MAX || other.x > hit.x || (other.x == hit.x && other.edge < hit.edge))) {
-    hit.edge = other.edge;
-    hit.x = other.x;
-  }
-}
-
-template <class Hit>
-void visit_edge(Hit& hit, const Point& h, std::uint32_t id, const Point& a, const Point& b) {
-  double x = 0;
-  const Crossing c = edge_crossing(h, a, b, x);
-  if (c == Crossing::through) hit.touching_edge = std::min(hit.touching_edge, id);
-  if (c == Crossing::left && (hit.edge == UINT32_MAX || x > hit.x || (x == hit.x && id < hit.edge)))
-    hit.edge = id, hit.x = x;
+  if (other.edge != UINT32_MAX && nearer(other.x, other.edge, hit))
+    hit.edge = other.edge, hit.x = other.x;
 }
 
 }  // namespace
@@ -266,8 +254,7 @@ HoleBridger::Attachment HoleBridger::find_scanned(std::uint32_t k, bool passes_h
     const std::uint32_t s = edge_start_[id];
     visit_edge(added, h, id, b_->pos[s], b_->pos[b_->next[s]]);
     if (added.touching_edge != UINT32_MAX ||
-        (added.edge != UINT32_MAX && (at.hit.edge == UINT32_MAX || added.x > at.hit.x ||
-                                      (added.x == at.hit.x && id < at.hit.edge))))
+        (added.edge != UINT32_MAX && nearer(added.x, id, at.hit)))
       return find_by_scan(hole, rank);
   }
   at.hit.x = std::min(at.hit.x, h.x);  // rounding may put a crossing a hair right of h

@@ -68,17 +68,10 @@ void HoleBridger::make_bridge(WaitingBridge& w) {
     b.vertex[copy] = b.vertex[of];
     list_copy(copy, of);
   }
-  const std::uint32_t after_target = b.next[target], before_hole = b.prev[hole];
-  b.link(target, hole);
-  b.link(before_hole, hole_copy);
-  b.link(hole_copy, target_copy);
-  b.link(target_copy, after_target);
+  b.link_diagonal(target, hole, target_copy, hole_copy);
   const std::array<std::uint32_t, 4> repeated{target, hole, target_copy, hole_copy};
   std::copy(repeated.begin(), repeated.end(), repeated_.begin() + w.repeat);
-  // The edge that left `target` now leaves its copy; the bridge leaves `target`.
-  const std::uint32_t old_edge = out_edge_[target];
-  edge_start_[old_edge] = target_copy;
-  out_edge_[target_copy] = old_edge;
+  hand_edge_to_copy(target, target_copy);
   edge_start_[w.edge] = target, out_edge_[target] = w.edge;
   edge_start_[w.edge + 1] = hole_copy, out_edge_[hole_copy] = w.edge + 1;
   for (const std::uint32_t node : w.marks) pending_[node] = touched;

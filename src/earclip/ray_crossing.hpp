@@ -1,6 +1,8 @@
 // Where a hole's leftward ray meets an edge (the bridger's searches, with and without a grid).
 #pragma once
 
+#include <algorithm>
+#include <cstdint>
 #include <utility>
 
 #include "pear/geometry.hpp"
@@ -31,6 +33,24 @@ enum class Crossing { none, left, through };
   if (a.y == b.y) return Crossing::none;
   if (a.y > b.y) std::swap(a, b);
   return ray_crossing(h, a, b, x);
+}
+
+/// Whether a crossing at x of edge `id` is nearer the hole than what `hit` holds: the largest
+/// x, then the smallest id, so the same whatever order the edges are looked at in.
+template <class Hit>
+bool nearer(double x, std::uint32_t id, const Hit& hit) {
+  return hit.edge == UINT32_MAX || x > hit.x || (x == hit.x && id < hit.edge);
+}
+
+/// Edge `id` (a-b) looked at for the ray from h: `hit` keeps the nearest crossing and the
+/// smallest id of an edge through h.
+template <class Hit>
+[[gnu::always_inline]] inline void visit_edge(Hit& hit, const Point& h, std::uint32_t id,
+                                              const Point& a, const Point& b) {
+  double x = 0;
+  const Crossing c = edge_crossing(h, a, b, x);
+  if (c == Crossing::through) hit.touching_edge = std::min(hit.touching_edge, id);
+  if (c == Crossing::left && nearer(x, id, hit)) hit.edge = id, hit.x = x;
 }
 
 }  // namespace pear::detail

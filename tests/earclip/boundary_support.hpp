@@ -10,20 +10,17 @@
 #include "clean/clean.hpp"
 #include "core/boundary.hpp"
 #include "core/stage.hpp"
+#include "pear/detail/flat_polygon.hpp"
 
 namespace pear::detail::testing {
 
 /// The polygon as the engine cleans it (expected to be clean: status ok).
 inline CleanPolygon cleaned(const Polygon& polygon) {
-  std::vector<Point> points;
-  std::vector<std::uint32_t> offsets{0};
-  for (const Ring& ring : polygon) {
-    points.insert(points.end(), ring.begin(), ring.end());
-    offsets.push_back(static_cast<std::uint32_t>(points.size()));
-  }
+  FlatPolygon flat;
+  flatten(polygon, flat);
   CleanPolygon clean;
   std::vector<Diagnostic> diagnostics;
-  EXPECT_EQ(clean_polygon(InputPolygon(PolygonView{points, offsets}), clean, diagnostics),
+  EXPECT_EQ(clean_polygon(PolygonView{flat.points, flat.ring_starts}, clean, diagnostics),
             Status::ok);
   return clean;
 }
