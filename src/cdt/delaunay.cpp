@@ -96,12 +96,12 @@ void copy_in_tasks(const TriangleList& from, TriangleList& to, const RunContext&
 /// Flips in sets, then across their borders; false, with the border flips cut short, where
 /// those passed border_flips_per_edge. scratch.clipped: the triangles before any flip.
 bool flip_in_sets(DelaunayScratch& scratch, std::uint32_t sets, std::size_t budget,
-                  const RunContext& ctx, DelaunayStatistics& stats, std::size_t region_ordered) {
+                  const RunContext& ctx, DelaunayStatistics& stats, ClipOrder order) {
   Mesh& mesh = scratch.mesh;
   TrianglePartition& partition = scratch.partition;
   const std::size_t count = mesh.triangles->size();
-  if (runs_make_sets(region_ordered, count, sets))
-    partition_in_runs(count, sets, ctx, partition);
+  if (runs_make_sets(order, count, sets))
+    partition_in_runs(mesh, order, sets, ctx, partition);
   else
     ctx.run_serial("cdt partition", [&] { partition_triangles(mesh, sets, partition); });
   FillVector<std::uint8_t>& queued = scratch.queued;
@@ -152,7 +152,7 @@ bool flip_in_sets(DelaunayScratch& scratch, std::uint32_t sets, std::size_t budg
 
 void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
                    TriangleList& triangles, const RunContext& ctx, DelaunayStatistics& stats,
-                   DelaunayScratchPtr& scratch, std::size_t region_ordered) {
+                   DelaunayScratchPtr& scratch, ClipOrder order) {
   stats = {};
   if (!scratch) scratch.reset(new DelaunayScratch);
   Mesh& mesh = scratch->mesh;
@@ -164,9 +164,7 @@ void make_delaunay(std::span<const Point> points, const CleanPolygon& polygon,
   const std::size_t sets =
       std::min<std::size_t>(ctx.partitions, triangles.size() / min_triangles_per_set);
   if (sets > 1) {
-    if (flip_in_sets(*scratch, static_cast<std::uint32_t>(sets), budget, ctx, stats,
-                     region_ordered))
-      return;
+    if (flip_in_sets(*scratch, static_cast<std::uint32_t>(sets), budget, ctx, stats, order)) return;
     copy_in_tasks(scratch->clipped, triangles, ctx);
     build_mesh(points, polygon, triangles, mesh, ctx);  // the same edges: `edges` stays
     stats.flips_in_partitions = stats.flips_on_borders = 0;

@@ -372,12 +372,13 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
       // costs the clipper 2-2.8x as much a node (random-holes-100k at 16 partitions: 2.0 ms
       // against the others' 0.75): with a hole every 64 nodes or more, half a share there.
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
-                                best_effort_vertex, region_ordered_, variant_scratch_, shared_,
+                                best_effort_vertex, clip_order_.region_ordered, variant_scratch_,
+                                shared_,
                                 (clean_.ring_count() - 1) * 64 >= boundary_.size() ? 0.5 : 1);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
                                shared_, options.delaunay);
-      region_ordered_ = out.size();  // chain after chain: each chain's ears lie together
+      clip_order_.region_ordered = out.size();  // chain after chain: each chain's ears lie together
       break;
     case Algorithm::mark_and_cut:
       rest = mark_and_cut(boundary_, entry, ctx, out, variant_scratch_, shared_);
@@ -407,7 +408,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
                    std::vector<Diagnostic>& diagnostics, DelaunayStatistics& delaunay) {
   out.clear();
   findings_.clear();
-  region_ordered_ = 0;
+  clip_order_ = {};
   if (options.threads > max_threads) {
     diagnostics.push_back({Issue::invalid_options, 0, 0});
     return Status::invalid_input;
@@ -438,7 +439,8 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
   // Divide-and-conquer's slabs make good flip sets (Greenland's CDT at 2 threads 110 -> 93 ms,
   // no serial walk) but where corridors wind through every slab: the 100k spiral's at 4 and 16
   // partitions took 76 and 105 ms against the walk's sets' 47 and 51.
-  if (algorithm == Algorithm::divide_and_conquer && outline.corridors()) region_ordered_ = 0;
+  if (algorithm == Algorithm::divide_and_conquer)
+    clip_order_ = outline.corridors() ? ClipOrder{} : ClipOrder{clip_order_.region_ordered, true};
   const Status status = report(input, diagnostics);
   // Flipping needs a valid triangulation to end in the CDT; a best effort is left as it is.
   if (options.delaunay && status == Status::ok) {
@@ -452,7 +454,7 @@ Status Engine::run(const InputPolygon& input, const Options& options, TriangleLi
     RunContext flip_ctx = ctx;
     if (flip_ctx.partitions > 1 && outline.few_long_runs()) flip_ctx.partitions = 1;
     make_delaunay(caller_points(input, flip_ctx), clean_, out, flip_ctx, delaunay,
-                  delaunay_scratch_, region_ordered_);
+                  delaunay_scratch_, clip_order_);
   }
   return status;
 }

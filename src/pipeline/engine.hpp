@@ -100,8 +100,8 @@ class Engine {
   SharedPositions shared_;                 ///< what the clipper learns of repeated positions
   std::vector<std::uint8_t> bridge_ends_;  ///< shared_'s marks where no rings touch
   std::vector<std::uint32_t> cycles_;      ///< one node per region to clip, the main one first
-  std::size_t region_ordered_ = 0;  ///< first triangles clipped region by region (for the CDT)
-  Boundary part_;                   ///< a region copied out of boundary_ (copy_cycle)
+  ClipOrder clip_order_;                   ///< the triangles clipped region by region (for the CDT)
+  Boundary part_;                          ///< a region copied out of boundary_ (copy_cycle)
   EarClipper clipper_;
   VariantScratchPtr variant_scratch_;    ///< the parallel variants' arrays, made on first use
   DelaunayScratchPtr delaunay_scratch_;  ///< the CDT's arrays, made on first use

@@ -244,40 +244,109 @@ TEST(RelinkBorders, PairsEveryBorderInRangesInTheOrderOfTheirEnds) {
   }
 }
 
-// Runs of the clip order are sets when at most 1/32 of the triangles came out otherwise, at any
-// number of sets; each set is one run, the runs in order and of equal size give or take one.
-TEST(PartitionInRuns, OnlyWhenNearlyAllAreOrderedAndEqualRunsInOrder) {
+// Runs of the clip order are sets when at most 1/32 of the triangles came out otherwise (1/8
+// where the rest lies on the seams), at any number of sets.
+TEST(PartitionInRuns, OnlyWhenNearlyAllAreOrdered) {
   for (const std::uint32_t sets : {2u, 3u, 16u}) {
-    EXPECT_TRUE(runs_make_sets(1024, 1024, sets));
-    EXPECT_TRUE(runs_make_sets(992, 1024, sets));   // 32 left: 1/32
-    EXPECT_FALSE(runs_make_sets(991, 1024, sets));  // 33 left
-    EXPECT_FALSE(runs_make_sets(800, 1024, sets));  // a spiral's chains at 2 partitions
+    EXPECT_TRUE(runs_make_sets({1024, false}, 1024, sets));
+    EXPECT_TRUE(runs_make_sets({992, false}, 1024, sets));   // 32 left: 1/32
+    EXPECT_FALSE(runs_make_sets({991, false}, 1024, sets));  // 33 left
+    EXPECT_TRUE(runs_make_sets({896, true}, 1024, sets));    // 128 left on the seams: 1/8
+    EXPECT_FALSE(runs_make_sets({895, true}, 1024, sets));
+    EXPECT_FALSE(runs_make_sets({800, false}, 1024, sets));  // a spiral's chains at 2 partitions
   }
-  EXPECT_FALSE(runs_make_sets(1024, 1024, 1));
-  EXPECT_FALSE(runs_make_sets(1025, 1024, 4));
-  for (const std::size_t count : {std::size_t{16}, std::size_t{1003}, std::size_t{65536}}) {
+  EXPECT_FALSE(runs_make_sets({1024, false}, 1024, 1));
+  EXPECT_FALSE(runs_make_sets({1025, false}, 1024, 4));
+}
+
+/// Every triangle in exactly one set, the sets' pieces of `order` in triangle order, each
+/// set's share of the first `ordered` triangles one run of equal size give or take one.
+void expect_runs_then_rest(const TrianglePartition& partition, std::size_t count,
+                           std::size_t ordered, std::uint32_t sets) {
+  ASSERT_EQ(partition.sets(), sets);
+  ASSERT_EQ(partition.part.size(), count);
+  ASSERT_EQ(partition.order.size(), count);
+  EXPECT_EQ(partition.begin.front(), 0u);
+  EXPECT_EQ(partition.begin.back(), count);
+  std::vector<int> seen(count, 0);
+  for (std::uint32_t s = 0; s < sets; ++s) {
+    const std::size_t first = partition.begin[s], last = partition.begin[s + 1];
+    const std::size_t run = ordered * (s + 1) / sets - ordered * s / sets;
+    ASSERT_GE(last - first, run);
+    EXPECT_TRUE(std::is_sorted(partition.order.begin() + first, partition.order.begin() + last));
+    for (std::size_t i = first; i < last; ++i) {
+      const std::uint32_t t = partition.order[i];
+      ASSERT_LT(t, count);
+      ++seen[t];
+      EXPECT_EQ(partition.part[t], s);
+      if (i < first + run) {
+        EXPECT_EQ(t, ordered * s / sets + (i - first));
+      } else {
+        EXPECT_GE(t, ordered);
+      }
+    }
+  }
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<std::ptrdiff_t>(count));
+}
+
+// Without the rest on the seams, set s is the run [count * s / sets, count * (s + 1) / sets)
+// of all the triangles (the rest in the last set), as partition-and-cut's finish wants.
+TEST(PartitionInRuns, EqualRunsInOrderOfAllTheTriangles) {
+  Triangulated t = triangulated(generate_polygon("random-holes", 20'000, 5));
+  Mesh mesh;
+  ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, RunContext{}));
+  const std::size_t count = t.triangles.size();
+  for (const std::uint32_t sets : {2u, 7u, 16u}) {
+    for (const unsigned threads : {1u, 4u}) {
+      SCOPED_TRACE(std::to_string(sets) + " sets, " + std::to_string(threads) + " threads");
+      Workers workers;
+      const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
+                           .partitions = sets};
+      TrianglePartition partition;
+      partition_in_runs(mesh, {count - count / 40, false}, sets, ctx, partition);
+      expect_runs_then_rest(partition, count, count, sets);
+    }
+  }
+}
+
+// With the rest on the seams (divide-and-conquer's repair patches), each triangle of the rest
+// joins a set beside it: where it has a neighbour among the ordered triangles, the first one's. In
+// ranges of their own: the same sets at every thread count, the rest in one range or several.
+TEST(PartitionInRuns, TheRestJoinsASetBesideIt) {
+  Triangulated t = triangulated(generate_polygon("random-holes", 20'000, 5));
+  Mesh mesh;
+  ASSERT_TRUE(build_mesh(t.points, t.clean, t.triangles, mesh, RunContext{}));
+  const std::size_t count = t.triangles.size();
+  for (const std::size_t ordered : {count, count - 1'000, count - count / 8}) {
     for (const std::uint32_t sets : {2u, 7u, 16u}) {
-      SCOPED_TRACE(std::to_string(count) + " triangles, " + std::to_string(sets) + " sets");
+      SCOPED_TRACE(std::to_string(count - ordered) + " left, " + std::to_string(sets) + " sets");
+      TrianglePartition one;
       for (const unsigned threads : {1u, 4u}) {
         Workers workers;
         const RunContext ctx{.runner = workers.runner(Options{.threads = threads}),
                              .partitions = sets};
         TrianglePartition partition;
-        partition_in_runs(count, sets, ctx, partition);
-        ASSERT_EQ(partition.sets(), sets);
-        ASSERT_EQ(partition.part.size(), count);
-        ASSERT_EQ(partition.order.size(), count);
-        EXPECT_EQ(partition.begin.front(), 0u);
-        EXPECT_EQ(partition.begin.back(), count);
-        for (std::uint32_t s = 0; s < sets; ++s) {
-          const std::size_t size = partition.begin[s + 1] - partition.begin[s];
-          EXPECT_LE(size, count / sets + 1);
-          EXPECT_GE(size, count / sets);
-          for (std::size_t i = partition.begin[s]; i < partition.begin[s + 1]; ++i) {
-            ASSERT_EQ(partition.order[i], i);
-            ASSERT_EQ(partition.part[i], s);
-          }
+        partition_in_runs(mesh, {ordered, true}, sets, ctx, partition);
+        expect_runs_then_rest(partition, count, ordered, sets);
+        if (threads == 1) {
+          one = partition;
+          continue;
         }
+        EXPECT_EQ(partition.part, one.part);
+        EXPECT_EQ(partition.order, one.order);
+      }
+      std::size_t beside = 0;
+      for (std::size_t tri = ordered; tri < count; ++tri) {
+        for (std::size_t h = 3 * tri; h < 3 * tri + 3; ++h) {
+          const std::uint32_t g = mesh.twin[h];
+          if (g == no_twin || g / 3 >= ordered) continue;
+          EXPECT_EQ(one.part[tri], one.part[g / 3]) << "triangle " << tri;
+          ++beside;
+          break;
+        }
+      }
+      if (ordered < count) {
+        EXPECT_GT(beside, 0u);
       }
     }
   }
