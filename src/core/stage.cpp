@@ -25,4 +25,12 @@ void RunContext::run_profiled(const char* phase, std::size_t count, TaskFunction
   profile->phases[recorded].wall_seconds = since(start);  // by index, for the same reason
 }
 
+void RunContext::run_out_of_line(const char* phase, std::size_t count, TaskFunction task) const {
+  if (profile) return run_profiled(phase, count, task);
+  if (parallel() && count > 1)
+    runner->run(count, task);
+  else
+    for (std::size_t i = 0; i < count; ++i) task(i);
+}
+
 }  // namespace pear::detail
