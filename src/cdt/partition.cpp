@@ -57,45 +57,32 @@ bool runs_make_sets(ClipOrder order, std::size_t count, std::uint32_t sets) {
 
 namespace {
 
-/// The triangles past the region-ordered ones a task assigns to sets.
-constexpr std::size_t rest_per_task = 4096;
+/// The triangles a task sorts into sets (a range of the rest is also how far its triangles'
+/// sets reach each other).
+constexpr std::size_t triangles_per_range = 8192;
 constexpr std::uint32_t unassigned = UINT32_MAX;
 
-/// The run set s takes of the first `ordered` triangles.
-std::size_t run_begin(std::size_t ordered, std::uint32_t sets, std::size_t s) {
-  return part_begin(ordered, sets, s);
-}
-
-/// Sets for the triangles [first, last) past the `ordered` ones (divide-and-conquer's repair
-/// patches): each beside an ordered triangle takes the set of its first such neighbour; the
-/// others, in passes while they reach further, the set of their first neighbour in this range
-/// that has one (never another task's: the result depends on the ranges only); any left the set
-/// of the one before them in the range, the first ones the set of the first assigned.
-void assign_rest(const Mesh& mesh, std::size_t ordered, std::size_t first, std::size_t last,
-                 std::uint32_t* part) {
-  const auto first_neighbour = [&](std::size_t t, auto has_set) {
-    for (std::size_t h = 3 * t; h < 3 * t + 3; ++h)
-      if (const std::uint32_t g = mesh.twin[h]; g != no_twin && has_set(g / 3)) return part[g / 3];
-    return unassigned;
+/// Sets for the triangles of [first, last): an ordered one (of the first `ordered`) by its run,
+/// one of the rest (divide-and-conquer's repair patches, clipped ear by ear from their borders)
+/// by its first neighbour among the ordered ones, else among the range's triangles before it
+/// (never another task's: the result depends on the ranges only), else as the one before it.
+void assign_range(const Mesh& mesh, std::size_t ordered, std::uint32_t sets, std::size_t first,
+                  std::size_t last, std::uint32_t* part) {
+  // The run of triangle u < ordered: the largest s with ordered * s / sets <= u.
+  const auto run_of = [&](std::uint64_t u) {
+    return static_cast<std::uint32_t>(((u + 1) * sets - 1) / ordered);
   };
-  for (std::size_t t = first; t < last; ++t)
-    part[t] = first_neighbour(t, [&](std::uint32_t u) { return u < ordered; });
-  const auto in_range_with_set = [&](std::uint32_t u) {
-    return u >= first && u < last && part[u] != unassigned;
-  };
-  for (bool reached = true, left = true; reached && left;) {
-    reached = left = false;
-    for (std::size_t t = first; t < last; ++t) {
-      if (part[t] != unassigned) continue;
-      part[t] = first_neighbour(t, in_range_with_set);
-      (part[t] == unassigned ? left : reached) = true;
-    }
+  std::uint32_t previous = 0;
+  for (std::size_t t = first; t < last; ++t) {
+    std::uint32_t set = t < ordered ? run_of(t) : unassigned;
+    for (std::size_t h = 3 * t; h < 3 * t + 3 && set == unassigned; ++h)
+      if (const std::uint32_t u = mesh.twin[h] / 3; mesh.twin[h] != no_twin && u < ordered)
+        set = run_of(u);
+    for (std::size_t h = 3 * t; h < 3 * t + 3 && set == unassigned; ++h)
+      if (const std::uint32_t u = mesh.twin[h] / 3; mesh.twin[h] != no_twin && u >= first && u < t)
+        set = part[u];
+    previous = part[t] = set == unassigned ? previous : set;
   }
-  const auto known =
-      std::find_if(part + first, part + last, [](std::uint32_t s) { return s != unassigned; });
-  std::uint32_t previous = known == part + last ? 0 : *known;
-  for (std::size_t t = first; t < last; ++t)
-    previous = part[t] = part[t] == unassigned ? previous : part[t];
 }
 
 }  // namespace
@@ -108,39 +95,28 @@ void partition_in_runs(const Mesh& mesh, ClipOrder clip_order, std::uint32_t set
   // Unfilled: a vector zeroed both on this thread, 2-3 ms of Eurasia's CDT at 16 partitions
   // outside every phase.
   std::uint32_t* const part = regrow_unfilled(partition.part, count);
-  regrow_unfilled(partition.order, count);
-  ctx.run_tasks("cdt partition: clip order", sets, [&](std::size_t s) {
-    for (std::size_t t = run_begin(ordered, sets, s); t < run_begin(ordered, sets, s + 1); ++t)
-      part[t] = static_cast<std::uint32_t>(s);
+  std::uint32_t* const order = regrow_unfilled(partition.order, count);
+  // A counting sort by set, stable: each set's run, then its share of the rest.
+  // place[r * sets + s]: how many of range r's triangles are in set s, then where they go.
+  const std::size_t ranges = (count + triangles_per_range - 1) / triangles_per_range;
+  const auto range = [&](std::size_t r) {
+    return std::pair(r * triangles_per_range, std::min(count, (r + 1) * triangles_per_range));
+  };
+  std::vector<std::size_t> place(ranges * sets, 0);
+  ctx.run_tasks("cdt partition: clip order", ranges, [&](std::size_t r) {
+    const auto [first, last] = range(r);
+    assign_range(mesh, ordered, sets, first, last, part);
+    for (std::size_t t = first; t < last; ++t) ++place[r * sets + part[t]];
   });
-  // The rest by ranges of their own; rest[r * sets + s]: range r's triangles in set s.
-  const std::size_t ranges = (count - ordered + rest_per_task - 1) / rest_per_task;
-  std::vector<std::size_t> rest(ranges * sets, 0);
-  ctx.run_tasks("cdt partition: the rest", ranges, [&](std::size_t r) {
-    const std::size_t first = ordered + r * rest_per_task;
-    const std::size_t last = std::min(count, first + rest_per_task);
-    assign_rest(mesh, ordered, first, last, part);
-    for (std::size_t t = first; t < last; ++t) ++rest[r * sets + part[t]];
-  });
-  // Set s: its run, then its share of the rest, range by range, each in triangle order.
   partition.begin.assign(sets + 1, 0);
-  for (std::uint32_t s = 0; s < sets; ++s) {
-    std::size_t at =
-        partition.begin[s] + run_begin(ordered, sets, s + 1) - run_begin(ordered, sets, s);
-    for (std::size_t r = 0; r < ranges; ++r) at += std::exchange(rest[r * sets + s], at);
+  for (std::size_t s = 0, at = 0; s < sets; ++s) {
+    for (std::size_t r = 0; r < ranges; ++r) at += std::exchange(place[r * sets + s], at);
     partition.begin[s + 1] = at;
   }
-  std::uint32_t* const order = partition.order.data();
-  ctx.run_tasks("cdt partition: order", sets + ranges, [&](std::size_t task) {
-    if (task < sets) {
-      const std::size_t from = run_begin(ordered, sets, task);
-      for (std::size_t t = from; t < run_begin(ordered, sets, task + 1); ++t)
-        order[partition.begin[task] + t - from] = static_cast<std::uint32_t>(t);
-      return;
-    }
-    const std::size_t r = task - sets, first = ordered + r * rest_per_task;
-    for (std::size_t t = first; t < std::min(count, first + rest_per_task); ++t)
-      order[rest[r * sets + part[t]]++] = static_cast<std::uint32_t>(t);
+  ctx.run_tasks("cdt partition: order", ranges, [&](std::size_t r) {
+    const auto [first, last] = range(r);
+    for (std::size_t t = first; t < last; ++t)
+      order[place[r * sets + part[t]]++] = static_cast<std::uint32_t>(t);
   });
 }
 
