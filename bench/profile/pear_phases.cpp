@@ -6,7 +6,7 @@
 //
 //   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1
 //   cdt16t1 pc16t4 pc16t8 pc16t16 cdt16t16 mc16t1 dc16t1 auto4t1 auto16t1 auto16t1cdt mc2 dc2 auto2
-//   cdt2
+//   cdt2 cdt2t1
 // Each phase also shows its share of the time on k threads by Brent's bound, max(work / k,
 // longest task), k the configuration's partitions (else its threads), and the header their sum:
 // the phases that bound the work/span projection (docs/scaling.md).
@@ -74,6 +74,7 @@ std::vector<Config> configs() {
   add("dc2", Algorithm::divide_and_conquer, 2, false);
   add("auto2", Algorithm::automatic, 2, false);
   add("cdt2", Algorithm::automatic, 2, true);
+  add("cdt2t1", Algorithm::automatic, 1, true, 2);  // cdt2's work on one thread
   return all;
 }
 
