@@ -369,12 +369,14 @@ bool Engine::clip_main(Algorithm algorithm, const Options& options, const RunCon
       // Part after part, each a slab: runs of this order are the CDT's flip sets.
       // Holes are bridged to the left, so the slabs left of the last line are cut into strips
       // by the bridges crossing both their lines, but the rightmost slab stays one piece, which
-      // costs the clipper 2-2.8x as much a node (random-holes-100k at 16 partitions: 2.0 ms
-      // against the others' 0.75): with a hole every 64 nodes or more, half a share there.
+      // costs the clipper 2.5-2.9x as much a node (random-holes-100k at 16 partitions: 2.0 ms
+      // against the others' 0.75 with a whole share, 1.16 against 0.81 with half): with a hole
+      // every 64 nodes or more, a third of a share there (0.78-0.82 against 0.80; at 4, 8
+      // parts, 1.7-1.8 ms each).
       return divide_and_conquer(boundary_, entry, options.heuristic, make_ear_clipper, ctx, out,
                                 best_effort_vertex, clip_order_.region_ordered, variant_scratch_,
                                 shared_,
-                                (clean_.ring_count() - 1) * 64 >= boundary_.size() ? 0.5 : 1);
+                                (clean_.ring_count() - 1) * 64 >= boundary_.size() ? 0.35 : 1);
     case Algorithm::partition_and_cut:
       rest = partition_and_cut(boundary_, entry, options.heuristic, ctx, out, variant_scratch_,
                                shared_, options.delaunay);
