@@ -153,9 +153,15 @@ std::uint32_t SimplicityCheck::link_edges_in_parts(const CleanPolygon& polygon,
 bool SimplicityCheck::cut_runs_in_parts(const CleanPolygon& polygon, const RunContext& ctx,
                                         std::size_t tasks) {
   const auto n = static_cast<std::uint32_t>(polygon.points.size());
-  run_start_.resize(polygon.ring_count());
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r)
-    run_start_[r] = first_turn(polygon.ring_starts[r], polygon.ring_starts[r + 1]);
+  const std::size_t rings = polygon.ring_count();
+  run_start_.resize(rings);
+  // In tasks of rings: on one thread, 0.12 ms of a 12,499-hole polygon's check at 16 partitions.
+  const std::size_t ring_tasks = ctx.tasks_for(rings, 256);
+  ctx.run_tasks("check simplicity: ring starts", ring_tasks, [&](std::size_t t) {
+    for (std::size_t r = range_start(rings, t, ring_tasks);
+         r < range_start(rings, t + 1, ring_tasks); ++r)
+      run_start_[r] = first_turn(polygon.ring_starts[r], polygon.ring_starts[r + 1]);
+  });
   const auto walk = [&](std::size_t t, auto&& at_position) {
     walk_run_positions(polygon, run_start_, direction_, range_start(n, t, tasks),
                        range_start(n, t + 1, tasks), at_position);

@@ -112,9 +112,11 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
   edges_.boxes.resize(n);
   // Every edge as if it led to the next point, in tasks (in chunks of 65,536 and linked on one
   // thread, a polygon of 100,000 points made two tasks and a serial pass: at 16 partitions 0.1
-  // ms where a sixteenth of the work was 0.01); then each ring's last edge, back to its first.
-  // The bounds need no correction: an edge from a ring's last point to the next ring's first
-  // lies in the box of all points, which the true edges' boxes span.
+  // ms where a sixteenth of the work was 0.01); then, in the same task, each ring's last edge
+  // of the task's range, back to its ring's first point (a loop over the rings after the tasks
+  // was 0.05 ms of a 12,499-hole polygon's check). The bounds need no correction: an edge from
+  // a ring's last point to the next ring's first lies in the box of all points, which the true
+  // edges' boxes span.
   const auto& pts = polygon.points;
   if (n == 0) return;
   const std::size_t tasks = ctx.tasks_for(n, 4096);
@@ -129,12 +131,17 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
       all = merged(all, edges_.boxes[e]);
     }
     bounds[t] = all;
+    const auto& starts = polygon.ring_starts;
+    // The rings ending in [begin, end): from the ring of point `begin` on.
+    for (auto r = static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), begin) -
+                                           starts.begin()) -
+                  1;
+         r + 1 < starts.size() && starts[r + 1] <= end; ++r) {
+      const std::uint32_t first = starts[r], last = starts[r + 1] - 1;
+      edges_.next[last] = first;
+      edges_.boxes[last] = edge_box(pts[last], pts[first]);
+    }
   });
-  for (std::size_t r = 0; r < polygon.ring_count(); ++r) {
-    const std::uint32_t first = polygon.ring_starts[r], last = polygon.ring_starts[r + 1] - 1;
-    edges_.next[last] = first;
-    edges_.boxes[last] = edge_box(pts[last], pts[first]);
-  }
   edges_.bounds = bounds[0];
   for (const EdgeBox& b : bounds) edges_.bounds = merged(edges_.bounds, b);
 }

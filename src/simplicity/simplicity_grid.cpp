@@ -195,10 +195,18 @@ class CellSearch {
 std::vector<std::size_t> task_cuts(const std::vector<std::uint32_t>& cell_start) {
   const std::size_t cells = cell_start.size() - 1, entries = cell_start.back();
   const std::size_t tasks = std::clamp<std::size_t>(entries / 4096, 1, 1024);
+  // Cut k: the first cell end past cut k - 1 with k / tasks of the entries before it, found by
+  // a binary search (a scan of every cell was 0.05 ms of Koch-8's check at 16 partitions,
+  // between two phases).
   std::vector<std::size_t> cuts{0};
-  for (std::size_t c = 0; c < cells; ++c)
-    if (cell_start[c + 1] * tasks >= entries * cuts.size() && cuts.size() < tasks)
-      cuts.push_back(c + 1);
+  for (std::size_t k = 1; k < tasks; ++k) {
+    const auto end = cell_start.begin() + static_cast<std::ptrdiff_t>(cells) + 1;
+    const auto at = std::partition_point(
+        cell_start.begin() + static_cast<std::ptrdiff_t>(cuts.back()) + 1, end,
+        [&](std::uint32_t before) { return std::size_t{before} * tasks < entries * k; });
+    if (at == end) break;
+    cuts.push_back(static_cast<std::size_t>(at - cell_start.begin()));
+  }
   cuts.push_back(cells);
   return cuts;
 }
