@@ -383,6 +383,15 @@ TEST(Cycles, TheSameEntriesInPartsAsNodeByNode) {
   }
 }
 
+/// The cycle through `entry`, node by node (past the boundary's size where it does not close).
+std::vector<std::uint32_t> walk_node_by_node(const Boundary& b, std::uint32_t entry) {
+  std::vector<std::uint32_t> nodes;
+  std::uint32_t v = entry;
+  do nodes.push_back(v), v = b.next[v];
+  while (v != entry && nodes.size() <= b.size());
+  return nodes;
+}
+
 /// cycle_runs (core/link_runs.hpp) against a walk node by node: rings joined by bridges (their
 /// copies numbered past the rings), nodes unlinked (their stale links point on), entries at a
 /// run's start, inside a run (the cycle then closes with a run that stops short of it) and at
@@ -393,13 +402,7 @@ TEST(Cycles, RunsFromTheJumpsLayOutTheWalk) {
   b.add_diagonal(29'000, 35'000 + 350);           // the third
   b.add_diagonal(35'000 + 700 + 4, 30'000 + 10);  // the fourth, from the third
   for (std::uint32_t v : {100u, 101u, 20'000u, 35'000u + 699u}) b.unlink(v);
-  const auto walked = [&](std::uint32_t entry) {
-    std::vector<std::uint32_t> order;
-    std::uint32_t v = entry;
-    do order.push_back(v), v = b.next[v];
-    while (v != entry && order.size() <= b.size());
-    return order;
-  };
+  const auto walked = [&](std::uint32_t entry) { return walk_node_by_node(b, entry); };
   for_each_context({1u, 2u}, {1u, 4u}, [&](const RunContext& ctx, const RunProfile&) {
     std::vector<std::uint32_t> jumps;
     ASSERT_TRUE(find_link_jumps(b, ctx, "jumps", 4, jumps, [](std::size_t, std::size_t) {}));
@@ -424,6 +427,37 @@ TEST(Cycles, RunsFromTheJumpsLayOutTheWalk) {
   JumpLinks links;
   link_jumps(b, jumps, serial, "jump links", 1, links);
   EXPECT_TRUE(cycle_runs(b, 0, jumps, links).empty());
+}
+
+/// walk_cycle_by_rulers (core/link_runs.hpp) against a walk node by node: links scrambled (runs
+/// of one node), a second cycle beside it (a ring left out, its rulers never reached), nodes
+/// unlinked (their stale links point on), entries on and off a ruler; a cycle that does not
+/// close gives none.
+TEST(Cycles, RulersLayOutTheWalk) {
+  Boundary b = rings({50'000, 20'000}, 0);
+  std::vector<std::uint32_t> order(50'000);
+  std::iota(order.begin(), order.end(), 0u);
+  std::shuffle(order.begin(), order.end(), std::mt19937(5));
+  for (std::size_t i = 0; i < order.size(); ++i) b.link(order[i], order[(i + 1) % order.size()]);
+  for (std::uint32_t v : {order[10], order[11], order[700]}) b.unlink(v);
+  const auto walked = [&](std::uint32_t entry) { return walk_node_by_node(b, entry); };
+  for_each_context({1u, 2u}, {4u, 16u}, [&](const RunContext& ctx, const RunProfile&) {
+    for (std::uint32_t entry : {order[0], order[1], 64u * 100, 50'000u + 7, 50'000u + 64}) {
+      const std::vector<std::uint32_t> expected = walked(entry);
+      ASSERT_EQ(expected.size(), entry < 50'000 ? 50'000u - 3 : 20'000u) << "entry " << entry;
+      std::vector<std::uint32_t> cycle{1, 2, 3};
+      ASSERT_TRUE(walk_cycle_by_rulers(b, entry, ctx, cycle)) << "entry " << entry;
+      EXPECT_EQ(cycle, expected) << "entry " << entry;
+    }
+  });
+  // A link cut: the cycle through order[0] no longer closes; the other still does.
+  b.next[order[20'000]] = order[20'000];
+  const RunContext serial;
+  std::vector<std::uint32_t> cycle{1, 2, 3};
+  EXPECT_FALSE(walk_cycle_by_rulers(b, order[0], serial, cycle));
+  EXPECT_EQ(cycle, (std::vector<std::uint32_t>{1, 2, 3})) << "untouched";
+  EXPECT_TRUE(walk_cycle_by_rulers(b, 50'000u + 7, serial, cycle));
+  EXPECT_EQ(cycle, walked(50'000u + 7));
 }
 
 TEST(Cycles, ScrambledLinksAreWalkedNodeByNode) {
