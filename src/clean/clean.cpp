@@ -334,6 +334,7 @@ struct Pieces {
   explicit Pieces(const std::vector<std::size_t>& lengths) {
     std::size_t load = 0;
     range_first.resize(lengths.size() + 1);
+    list.reserve(lengths.size());  // a piece a ring but for long ones (random holes: 12,500)
     for (std::uint32_t r = 0; r < lengths.size(); ++r) {
       range_first[r] = list.size();
       for (std::size_t k = 0; k < lengths[r]; k += clean_chunk) {
