@@ -28,20 +28,21 @@ void partition_triangles(const Mesh& mesh, std::uint32_t sets, TrianglePartition
 /// the `count` triangles came out region by region (`order.region_ordered` first ones), 1/8
 /// where the rest lies on the seams, whatever the number of sets. Partition-and-cut's chains do
 /// on the coasts (99.8% at 16 partitions), divide-and-conquer's parts before their repair's
-/// patches (random-holes-100k at 16: 93%); a
-/// sequential clip's order is by ear quality, scattered over the polygon, and where chains emit
-/// less a corridor's two walls fall in different chains: on the 100k spiral (52% from chains at
-/// 16 partitions, over 75% at 2) runs made 2.3 million border flips against the walk's 81,000 at
-/// 16, and 2.27 million against 1,800 at 2. Runs need no walk, which is serial.
+/// patches (random-holes-100k at 16: 93%). A sequential clip's order is by ear quality,
+/// scattered over the polygon, and where chains emit less a corridor's two walls fall in
+/// different chains: on the 100k spiral (52% from chains at 16 partitions, over 75% at 2) runs
+/// made 2.3 million border flips against the walk's 81,000 at 16, and 2.27 million against
+/// 1,800 at 2. Runs need no walk, which is serial.
 bool runs_make_sets(ClipOrder order, std::size_t count, std::uint32_t sets);
 
 /// Set s is the run [R * s / sets, R * (s + 1) / sets) of the first R triangles, then those of
-/// the rest whose first neighbour with a set is in it (found in ranges of their own, in passes:
-/// a repair's patch reaches in from its border), all by ctx's tasks. R is
-/// `order.region_ordered` where the rest lies on the seams, else all the triangles.
-/// Eurasia at 16 sets: 77,694 border flips against the walk's 303,300 and no 44 ms serial walk;
-/// random-holes-100k at 16, 6.9% of its triangles in divide-and-conquer's patches: no 1.8 ms
-/// serial walk.
+/// the rest that join it: each the set of its first neighbour among the R, else of its first
+/// neighbour before it in its range (a repair's patch is clipped from its border in), else of
+/// the triangle before it. The ranges are fixed by the triangle count, never by the threads;
+/// all by ctx's tasks. R is `order.region_ordered` where the rest lies on the seams, else all
+/// the triangles. Eurasia at 16 sets: 77,694 border flips against the walk's 303,300 and no
+/// 44 ms serial walk; random-holes-100k at 16, 6.9% of its triangles in divide-and-conquer's
+/// patches: no 1.8 ms serial walk.
 void partition_in_runs(const Mesh& mesh, ClipOrder order, std::uint32_t sets, const RunContext& ctx,
                        TrianglePartition& partition);
 
