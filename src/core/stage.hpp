@@ -75,6 +75,12 @@ struct CleanPolygon {
   std::vector<std::uint32_t> ring_starts;  ///< kept ring r is [ring_starts[r], ring_starts[r+1])
   std::vector<std::uint32_t> ring_source;  ///< the caller's ring number of each kept ring
   std::size_t ring_count() const { return ring_starts.empty() ? 0 : ring_starts.size() - 1; }
+  /// The ring of point (or edge) i.
+  std::size_t ring_of(std::size_t i) const {
+    return static_cast<std::size_t>(std::upper_bound(ring_starts.begin(), ring_starts.end(), i) -
+                                    ring_starts.begin()) -
+           1;
+  }
   void clear() {
     points.clear();
     original.clear();
@@ -112,22 +118,21 @@ struct RunContext {
   /// Runs task(i) for i in [0, count) in parallel and waits; records the phase when profiling.
   template <class Task>
   void run_tasks(const char* phase, std::size_t count, Task&& task) const {
-    if constexpr (!PEAR_HAS_THREADS)
-      run_out_of_line(phase, count, TaskFunction(task));
-    else if (profile)
-      run_profiled(phase, count, TaskFunction(task));
-    else if (parallel() && count > 1)
-      runner->run(count, task);
-    else
+    // Inlined only where the tasks run here, unprofiled, in a build with threads (the
+    // per-polygon path); everything else is dispatched out of line.
+    if (PEAR_HAS_THREADS && !profile && !(parallel() && count > 1)) {
       for (std::size_t i = 0; i < count; ++i) task(i);
+      return;
+    }
+    run_out_of_line(phase, count, TaskFunction(task));
   }
 
   /// run_tasks with every task's time and the phase's elapsed time recorded. Out of line: inlined
   /// at each of the pipeline's phases it made the WebAssembly module 8 KB larger.
   void run_profiled(const char* phase, std::size_t count, TaskFunction task) const;
-  /// run_tasks in a build without threads: each task's body one function, called through a
-  /// pointer, not also inlined into a loop at every call (pear.wasm 10.3 KB smaller, as fast in
-  /// node: docs/javascript.md, "Size").
+  /// run_tasks where its tasks run in parallel, are profiled, or the build has no threads: each
+  /// task's body one function, called through a pointer (without threads, not also inlined into
+  /// a loop at every call: pear.wasm 10.3 KB smaller, as fast in node; docs/javascript.md).
   void run_out_of_line(const char* phase, std::size_t count, TaskFunction task) const;
 
   /// Runs a sequential step, recorded as a phase of one task when profiling.

@@ -15,14 +15,6 @@
 namespace pear::detail {
 namespace {
 
-/// The ring of edge (or position) e.
-std::size_t ring_of(const CleanPolygon& polygon, std::uint32_t e) {
-  const auto& starts = polygon.ring_starts;
-  return static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), e) -
-                                  starts.begin()) -
-         1;
-}
-
 /// Range t of `tasks` over [0, n).
 std::uint32_t range_start(std::size_t n, std::size_t t, std::size_t tasks) {
   return static_cast<std::uint32_t>(n * t / tasks);
@@ -32,7 +24,7 @@ std::uint32_t range_start(std::size_t n, std::size_t t, std::size_t tasks) {
 template <class Visit>
 void for_edges(const CleanPolygon& polygon, std::uint32_t first, std::uint32_t end, Visit&& visit) {
   if (first >= end) return;
-  std::size_t r = ring_of(polygon, first);
+  std::size_t r = polygon.ring_of(first);
   for (std::uint32_t e = first; e < end; ++e) {
     while (e >= polygon.ring_starts[r + 1]) ++r;
     visit(e, polygon.ring_starts[r], polygon.ring_starts[r + 1]);
@@ -46,7 +38,7 @@ void walk_run_positions(const CleanPolygon& polygon, const std::vector<std::uint
                         const FillVector<std::int8_t>& direction, std::uint32_t first,
                         std::uint32_t end, AtPosition&& at_position) {
   if (first >= end) return;
-  std::size_t r = ring_of(polygon, first);
+  std::size_t r = polygon.ring_of(first);
   const auto edge_at = [&](std::uint32_t p, std::uint32_t ring_first, std::uint32_t ring_end) {
     const std::uint32_t e = run_start[r] + (p - ring_first);
     return e >= ring_end ? e - (ring_end - ring_first) : e;

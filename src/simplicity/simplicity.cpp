@@ -133,10 +133,8 @@ void SimplicityCheck::index_edges(const CleanPolygon& polygon, const RunContext&
     bounds[t] = all;
     const auto& starts = polygon.ring_starts;
     // The rings ending in [begin, end): from the ring of point `begin` on.
-    for (auto r = static_cast<std::size_t>(std::upper_bound(starts.begin(), starts.end(), begin) -
-                                           starts.begin()) -
-                  1;
-         r + 1 < starts.size() && starts[r + 1] <= end; ++r) {
+    for (std::size_t r = polygon.ring_of(begin); r + 1 < starts.size() && starts[r + 1] <= end;
+         ++r) {
       const std::uint32_t first = starts[r], last = starts[r + 1] - 1;
       edges_.next[last] = first;
       edges_.boxes[last] = edge_box(pts[last], pts[first]);
