@@ -69,7 +69,10 @@ class HoleBridger {
   struct Attachment {
     bool touches = false;  ///< a merged node lies at the hole's vertex
     RayHit hit;
-    Point target;  ///< the visible vertex, when the ray hit an edge
+    /// The visible vertex, when the ray hit an edge; else the origin, never garbage: the
+    /// splice reads its cell before it knows nothing was hit (uninitialised, a NaN there made
+    /// the cell index wild: a SEGV under ASan in a fresh-clone CI run at e037ab6).
+    Point target{};
     /// The merged node to splice at (node_at of the hole's vertex, or of target), as the
     /// search saw it: still right while no splice changed a node in its cell.
     std::uint32_t node = UINT32_MAX;
