@@ -111,21 +111,20 @@ std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
 }
 
 bool EarClipper::is_ear(std::uint32_t v) const {
-  return detail::is_ear(*b_, AllLinks{}, v,
-                        [this](const Point& a, const Point& t, const Point& c, auto&& visit) {
-                          // Counts the hashed nodes in the triangle's box: the ear test's work.
-                          const Point lo{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y})};
-                          const Point hi{std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
-                          return grid_.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
-                            const Point& x = e.pos;
-                            // One branch: which side of the box a node misses by is a
-                            // coin toss for the predictor, that it misses is not.
-                            if (!((x.x >= lo.x) & (x.x <= hi.x) & (x.y >= lo.y) & (x.y <= hi.y)))
-                              return false;
-                            ++boxed_;
-                            return visit(e);
-                          });
-                        });
+  return grid_.scans_cells() ? test_ear<true>(v) : test_ear<false>(v);
+}
+
+template <bool scanned>
+bool EarClipper::test_ear(std::uint32_t v) const {
+  const auto near = [this](const Point& a, const Point& t, const Point& c, const Box& box,
+                           auto&& visit) {
+    // Counts the hashed nodes in the triangle's box: the ear test's work.
+    return grid_.any_in_box_near_triangle<scanned>(a, t, c, box, [&](const ReflexGrid::Entry& e) {
+      ++boxed_;
+      return visit(e);
+    });
+  };
+  return detail::is_ear(*b_, AllLinks{}, v, near);
 }
 
 double EarClipper::quality(std::uint32_t v) const {

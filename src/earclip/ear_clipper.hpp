@@ -68,6 +68,9 @@ class EarClipper final : public CycleClipper {
   bool clip_prepared(std::uint32_t entry);
   void classify(std::uint32_t entry, SharedPositions shared);
   bool is_ear(std::uint32_t v) const;
+  /// is_ear with the grid's query `scanned` (ReflexGrid::scans_cells).
+  template <bool scanned>
+  bool test_ear(std::uint32_t v) const;
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);

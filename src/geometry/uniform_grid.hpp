@@ -58,8 +58,8 @@ struct GridFrame {
   /// an edge at an exact y (a few ulps of the largest |x|); column() is monotone, so every
   /// point of the triangle lies in a visited cell. Stops and returns true when visit does.
   template <class VisitRow>
-  bool any_row_span_of_triangle(const Point& a, const Point& b, const Point& c,
-                                VisitRow&& visit) const {
+  [[gnu::always_inline]] bool any_row_span_of_triangle(const Point& a, const Point& b,
+                                                       const Point& c, VisitRow&& visit) const {
     const double lo_y = std::min({a.y, b.y, c.y}), hi_y = std::max({a.y, b.y, c.y});
     const double lo_x = std::min({a.x, b.x, c.x}), hi_x = std::max({a.x, b.x, c.x});
     const double x_slack =

@@ -8,20 +8,28 @@ namespace pear::detail {
 
 namespace {
 
-/// Foreign entries one ear test may look at. The start grids keep what other chains have
-/// clipped since the phase began, so a big triangle late in a chain's work would look at many
-/// dead nodes; such an ear is left to the next round or the sequential finish, with a fresh grid.
+/// Foreign entries in an ear's box one ear test may look at. The start grids keep what other
+/// chains have clipped since the phase began, so a big triangle late in a chain's work would
+/// look at many dead nodes; such an ear is left to the next round or the sequential finish,
+/// with a fresh grid.
 constexpr int foreign_budget = 48;
 
 }  // namespace
 
 bool ChainClipper::is_ear(std::uint32_t v) const {
-  const auto near = [this](const Point& a, const Point& t, const Point& c, auto&& visit) {
+  return own_grid_.scans_cells() ? test_ear<true>(v) : test_ear<false>(v);
+}
+
+template <bool scanned>
+bool ChainClipper::test_ear(std::uint32_t v) const {
+  const auto near = [this](const Point& a, const Point& t, const Point& c, const Box& box,
+                           auto&& visit) {
     int looked_at = 0;
-    return own_grid_.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
-      if (!own(e.node) && ++looked_at > foreign_budget) return true;
-      return visit(e);
-    });
+    return own_grid_.any_in_box_near_triangle<scanned>(
+        a, t, c, box, [&](const ReflexGrid::Entry& e) {
+          if (!own(e.node) && ++looked_at > foreign_budget) return true;
+          return visit(e);
+        });
   };
   return detail::is_ear(*s_->b, OwnLinks{s_, chain_}, v, near);
 }

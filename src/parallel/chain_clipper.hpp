@@ -25,6 +25,9 @@ class ChainClipper {
   };
   bool own(std::uint32_t v) const { return s_->owner[v] == chain_; }
   bool is_ear(std::uint32_t v) const;
+  /// is_ear with the grid's query `scanned` (ReflexGrid::scans_cells).
+  template <bool scanned>
+  bool test_ear(std::uint32_t v) const;
   void build_grid(std::size_t first, std::size_t last);
   void offer(std::uint32_t v);
   bool clippable(std::uint32_t v) const;

@@ -74,9 +74,8 @@ class MarkAndCut {
   }
 
   bool is_ear(std::uint32_t v) const {
-    const auto near = [this](const Point& a, const Point& t, const Point& c, auto&& visit) {
-      return s_.any_hashed_near(a, t, c, visit);
-    };
+    const auto near = [this](const Point& a, const Point& t, const Point& c, const Box& box,
+                             auto&& visit) { return s_.any_hashed_near(a, t, c, box, visit); };
     return detail::is_ear(b_, AllLinks{}, v, near);
   }
 

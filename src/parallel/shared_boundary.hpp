@@ -45,21 +45,24 @@ struct SharedBoundary {
   std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
                                            const RunContext& ctx, bool removable = false);
 
-  /// Calls visit(entry) for the hashed nodes near triangle (a, b, c) that other chains than
-  /// `chain` held at the phase start, until visit returns true; returns whether it did.
+  /// Calls visit(entry) for the hashed nodes within `box` near triangle (a, b, c) (`box` its
+  /// bounding box) that other chains than `chain` held at the phase start, and for every
+  /// landmark, until visit returns true; returns whether it did.
   template <class Visit>
-  bool any_foreign_near(const Point& a, const Point& b, const Point& c, std::size_t chain,
-                        Visit&& visit) const {
+  bool any_foreign_near(const Point& a, const Point& b, const Point& c, const Box& box,
+                        std::size_t chain, Visit&& visit) const {
     for (std::uint32_t mark : landmarks)
       if (visit(ReflexGrid::Entry{this->b->pos[mark], mark})) return true;
     for (std::size_t other = 0; other < chains; ++other)
-      if (other != chain && start_grids[other].any_near_triangle(a, b, c, visit)) return true;
+      if (other != chain && start_grids[other].any_in_box_near_triangle(a, b, c, box, visit))
+        return true;
     return false;
   }
   /// The same for the hashed nodes of every chain.
   template <class Visit>
-  bool any_hashed_near(const Point& a, const Point& b, const Point& c, Visit&& visit) const {
-    return any_foreign_near(a, b, c, chains, visit);
+  bool any_hashed_near(const Point& a, const Point& b, const Point& c, const Box& box,
+                       Visit&& visit) const {
+    return any_foreign_near(a, b, c, box, chains, visit);
   }
   std::size_t chains = 0;
 

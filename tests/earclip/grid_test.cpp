@@ -6,6 +6,7 @@
 // the exact orient2d.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <set>
@@ -103,15 +104,22 @@ TEST_P(GridQuery, FindsEveryPointOfRandomSlivers) {
 /// ReflexGrid as the clippers use it: nodes leave one by one (in random order, some added late
 /// as a split's copies do), and after every change a query over a triangle finds exactly the
 /// nodes still in the grid inside it, down to none left and back to one added after that (the
-/// query skips an empty grid: its count must follow every add and remove); and a query over a
-/// box (the chains' gathering of other chains' nodes) the nodes still in the grid within it.
+/// query skips an empty grid: its count must follow every add and remove); the query within
+/// the triangle's box (the ear tests') the same nodes in the same order, less those outside the
+/// box; and a query over a box (the chains' gathering of other chains' nodes) the nodes still
+/// in the grid within it. Every fourth round crowds 150 nodes into one cell: its columns are
+/// scanned 64 at a time.
 TEST(ReflexGridQuery, FindsTheNodesStillInTheGridAsTheyLeave) {
   std::mt19937 rng(23);
   std::uniform_real_distribution<double> coordinate(0.0, 100.0);
   for (int round = 0; round < 20; ++round) {
     Boundary b;
     const std::uint32_t n = 50 + static_cast<std::uint32_t>(rng() % 200);
-    for (std::uint32_t v = 0; v <= n + 20; ++v) b.add({coordinate(rng), coordinate(rng)}, v);
+    const std::uint32_t crowded = round % 4 == 3 ? 150 : 0;
+    for (std::uint32_t v = 0; v <= n + 20; ++v) {
+      const double scale = v < crowded ? 1e-3 : 1;
+      b.add({scale * coordinate(rng), scale * coordinate(rng)}, v);
+    }
     std::vector<std::uint32_t> built(n);
     for (std::uint32_t v = 0; v < n; ++v) built[v] = v;
     ReflexGrid grid;
@@ -123,15 +131,44 @@ TEST(ReflexGridQuery, FindsTheNodesStillInTheGridAsTheyLeave) {
         Point a{coordinate(rng), coordinate(rng)}, c{coordinate(rng), coordinate(rng)};
         Point t{coordinate(rng), coordinate(rng)};
         if (orient2d(a, t, c) < 0) std::swap(t, c);
+        if (q == 0 && crowded > 0) a = {-1, -1}, t = {50, -1}, c = {-1, 50};  // over the crowd
         std::set<std::uint32_t> expected, found;
         for (std::uint32_t v : in_grid)
           if (inside_or_on(a, t, c, b.pos[v])) expected.insert(v);
+        const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}),
+                      std::max({a.x, t.x, c.x}), std::max({a.y, t.y, c.y})};
+        const auto in_box = [&](const Point& p) {
+          return p.x >= box.x0 && p.x <= box.x1 && p.y >= box.y0 && p.y <= box.y1;
+        };
+        std::vector<std::uint32_t> near_in_box, boxed;
         grid.any_near_triangle(a, t, c, [&](const ReflexGrid::Entry& e) {
           if (inside_or_on(a, t, c, e.pos)) found.insert(e.node);
+          if (in_box(e.pos)) near_in_box.push_back(e.node);
           return false;
         });
         ASSERT_EQ(found, expected)
             << when << ", round " << round << ", " << in_grid.size() << " nodes in the grid";
+        // Both ways (a SIMD scan of the cells, a test a node), whichever the grid would take.
+        for (const bool scanned : {false, true}) {
+          boxed.clear();
+          const auto collect = [&](const ReflexGrid::Entry& e) {
+            EXPECT_EQ(e.pos, b.pos[e.node]);
+            boxed.push_back(e.node);
+            return false;
+          };
+          if (scanned)
+            grid.any_in_box_near_triangle<true>(a, t, c, box, collect);
+          else
+            grid.any_in_box_near_triangle<false>(a, t, c, box, collect);
+          ASSERT_EQ(boxed, near_in_box) << when << ", round " << round << ", scanned " << scanned;
+        }
+        // It stops where the visit says so.
+        if (boxed.size() > 1) {
+          std::size_t visits = 0;
+          EXPECT_TRUE(grid.any_in_box_near_triangle(
+              a, t, c, box, [&](const ReflexGrid::Entry&) { return ++visits == 2; }));
+          EXPECT_EQ(visits, 2u);
+        }
       }
       // Boxes (some past the grid's edges, some a single point at a node): exactly the nodes
       // still in the grid within them.
