@@ -5,8 +5,8 @@
 // The smallest of several runs is the one least disturbed on a shared machine.
 //
 //   pear_phases FILE [RUNS] [CONFIG...]   CONFIG: top fast cdt cdtfast pc2 pc2cdt pc2t1 pc16t1
-//   cdt16t1 pc16t4 pc16t8 pc16t16 cdt16t16 mc16t1 dc16t1 auto4t1 auto16t1 auto16t1cdt mc2 dc2 auto2
-//   cdt2 cdt2t1
+//   cdt16t1 pc16t4 pc16t8 pc16t16 cdt16t16 mc16t1 dc16t1 auto2t1 auto4t1 auto16t1 auto16t1cdt mc2
+//   dc2 auto2 cdt2 cdt2t1
 // Each phase also shows its share of the time on k threads by Brent's bound, max(work / k,
 // longest task), k the configuration's partitions (else its threads), and the header their sum:
 // the phases that bound the work/span projection (docs/scaling.md).
@@ -67,6 +67,7 @@ std::vector<Config> configs() {
   add("cdt16t16", Algorithm::sequential, 16, true, 16);
   add("mc16t1", Algorithm::mark_and_cut, 1, false, 16);
   add("dc16t1", Algorithm::divide_and_conquer, 1, false, 16);
+  add("auto2t1", Algorithm::automatic, 1, false, 2);    // what automatic picks at 2 partitions
   add("auto4t1", Algorithm::automatic, 1, false, 4);    // what automatic picks at 4 partitions
   add("auto16t1", Algorithm::automatic, 1, false, 16);  // what automatic picks at 16 partitions
   add("auto16t1cdt", Algorithm::automatic, 1, true, 16);
