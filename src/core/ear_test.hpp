@@ -100,10 +100,10 @@ inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) 
 }
 
 /// Whether v is an ear: strictly convex, the diagonal clear at its ends, and no hashed node
-/// blocks it. `near(a, t, c, box, visit)` calls visit(entry) for the hashed nodes near the
-/// triangle (`box` its bounding box: a near that leaves out the nodes outside it loses none
-/// that could block) until visit returns true, and returns whether it did. Reads the links of
-/// v, its neighbours and of blocking candidates that `links` allows.
+/// blocks it. `near(a, t, c, box, visit)` calls visit(entry) for the hashed nodes within `box`,
+/// the triangle's bounding box (no node outside it can block), until visit returns true, and
+/// returns whether it did. Reads the links of v, its neighbours and of blocking candidates
+/// that `links` allows.
 template <class Links, class Near>
 bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near) {
   const std::uint32_t p = b.prev[v], n = b.next[v];
@@ -113,11 +113,8 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
   const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
                 std::max({a.y, t.y, c.y})};
   return !near(a, t, c, box, [&](const ReflexGrid::Entry& e) {
-    const Point& x = e.pos;
-    // One branch: which side of the box a node misses by is a coin toss for the predictor.
-    if (!((x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1))) return false;
     if (e.node == p || e.node == v || e.node == n) return false;
-    return blocks(b, links, p, v, n, e.node, a, t, c, x);
+    return blocks(b, links, p, v, n, e.node, a, t, c, e.pos);
   });
 }
 

@@ -166,12 +166,8 @@ class ReflexGrid {
                                                        const Point& c, const Box& box,
                                                        Visit&& visit) const {
     if constexpr (!scanned) {
-      return any_near_triangle(a, b, c, [&](const Entry& e) {
-        const Point& x = e.pos;
-        // One branch: which side of the box a node misses by is a coin toss for the
-        // predictor, that it misses is not.
-        return (x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1) && visit(e);
-      });
+      return any_near_triangle(
+          a, b, c, [&](const Entry& e) { return box.contains(e.pos.x, e.pos.y) && visit(e); });
     } else {
       if (live_ == 0) return false;
       const auto visit_row = [&](std::size_t first, std::size_t last) {
@@ -189,11 +185,8 @@ class ReflexGrid {
       };
       const bool apart = box.x1 < lo_.x || box.x0 > hi_.x || box.y1 < lo_.y || box.y0 > hi_.y;
       if (!apart && frame_.any_row_span_of_triangle(a, b, c, visit_row)) return true;
-      for (const Entry& e : extra_) {
-        const Point& x = e.pos;
-        if ((x.x >= box.x0) & (x.x <= box.x1) & (x.y >= box.y0) & (x.y <= box.y1) && visit(e))
-          return true;
-      }
+      for (const Entry& e : extra_)
+        if (box.contains(e.pos.x, e.pos.y) && visit(e)) return true;
       return false;
     }
   }

@@ -21,6 +21,9 @@ namespace pear::detail {
 /// An axis-parallel box, closed.
 struct Box {
   double x0, y0, x1, y1;
+  /// Whether (x, y) lies in the box, sides included. One branch for the caller: which side a
+  /// point misses by is a coin toss for the predictor, that it misses is not.
+  bool contains(double x, double y) const { return (x >= x0) & (x <= x1) & (y >= y0) & (y <= y1); }
 };
 
 /// Boxes as a column per side in floats, each side a double rounded (to nearest, or any

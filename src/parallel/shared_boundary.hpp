@@ -45,14 +45,16 @@ struct SharedBoundary {
   std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
                                            const RunContext& ctx, bool removable = false);
 
-  /// Calls visit(entry) for the hashed nodes within `box` near triangle (a, b, c) (`box` its
-  /// bounding box) that other chains than `chain` held at the phase start, and for every
-  /// landmark, until visit returns true; returns whether it did.
+  /// Calls visit(entry) for the hashed nodes within `box` (the bounding box of triangle (a, b,
+  /// c)) that other chains than `chain` held at the phase start, and for the landmarks within
+  /// it, until visit returns true; returns whether it did.
   template <class Visit>
   bool any_foreign_near(const Point& a, const Point& b, const Point& c, const Box& box,
                         std::size_t chain, Visit&& visit) const {
-    for (std::uint32_t mark : landmarks)
-      if (visit(ReflexGrid::Entry{this->b->pos[mark], mark})) return true;
+    for (std::uint32_t mark : landmarks) {
+      const Point& at = this->b->pos[mark];
+      if (box.contains(at.x, at.y) && visit(ReflexGrid::Entry{at, mark})) return true;
+    }
     for (std::size_t other = 0; other < chains; ++other)
       if (other != chain && start_grids[other].any_in_box_near_triangle(a, b, c, box, visit))
         return true;
