@@ -94,8 +94,8 @@ inline bool diagonal_clear_at_ends(const Point& a, const Point& c, const Point& 
 
 /// The same with the points by value: orient2d's exact stage is a call, after which anything
 /// read through a reference would be read again.
-inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) {
-  DiagonalTurns turns;
+inline bool diagonal_clear_at_ends_of(Point a, Point c, Point before, Point after,
+                                      DiagonalTurns& turns) {
   return diagonal_clear_at_ends(a, c, before, after, turns);
 }
 
@@ -103,12 +103,15 @@ inline bool diagonal_clear_at_ends(Point a, Point c, Point before, Point after) 
 /// blocks it. `near(a, t, c, box, visit)` calls visit(entry) for the hashed nodes within `box`,
 /// the triangle's bounding box (no node outside it can block), until visit returns true, and
 /// returns whether it did. Reads the links of v, its neighbours and of blocking candidates
-/// that `links` allows.
+/// that `links` allows. When v is an ear, `turns` holds the turns its neighbours will have once
+/// it is clipped: their refreshes need not compute them again.
 template <class Links, class Near>
-bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near) {
+bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near,
+            DiagonalTurns& turns) {
   const std::uint32_t p = b.prev[v], n = b.next[v];
   const Point a = b.pos[p], t = b.pos[v], c = b.pos[n];
-  if (!(orient2d(a, t, c) > 0) || !diagonal_clear_at_ends(a, c, b.pos[b.prev[p]], b.pos[b.next[n]]))
+  if (!(orient2d(a, t, c) > 0) ||
+      !diagonal_clear_at_ends_of(a, c, b.pos[b.prev[p]], b.pos[b.next[n]], turns))
     return false;
   const Box box{std::min({a.x, t.x, c.x}), std::min({a.y, t.y, c.y}), std::max({a.x, t.x, c.x}),
                 std::max({a.y, t.y, c.y})};
@@ -116,6 +119,13 @@ bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near)
     if (e.node == p || e.node == v || e.node == n) return false;
     return blocks(b, links, p, v, n, e.node, a, t, c, e.pos);
   });
+}
+
+/// is_ear without the turns.
+template <class Links, class Near>
+bool is_ear(const Boundary& b, const Links& links, std::uint32_t v, Near&& near) {
+  DiagonalTurns turns;
+  return is_ear(b, links, v, near, turns);
 }
 
 /// `top` pops ears in key order across the whole polygon, and waits for memory, not arithmetic.

@@ -95,7 +95,7 @@ std::uint32_t EarClipper::dissolve_spikes(std::uint32_t v) {
 }
 
 /// After a clip next to v: dissolve spikes, refresh the convexity and ear status around v.
-std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
+std::uint32_t EarClipper::settle(std::uint32_t v, bool queue, const double* turn) {
   if (!alive_[v]) return UINT32_MAX;
   const std::uint32_t u = dissolve_spikes(v);
   if (u != v) {
@@ -105,17 +105,30 @@ std::uint32_t EarClipper::settle(std::uint32_t v, bool queue) {
     }
     return u;
   }
-  update_neighbour(v);
-  if (queue) offer(v);
+  const double now = turn != nullptr ? *turn : b_->turn(v);
+  update_neighbour(v, now);
+  if (queue) offer(v, now);
   return v;
 }
 
+std::array<std::uint32_t, 2> EarClipper::settle_clipped(std::uint32_t p, std::uint32_t n,
+                                                        const DiagonalTurns& turns, bool queue) {
+  const std::uint32_t n_left = settle(n, queue, &turns.after);
+  const std::uint32_t p_left = settle(p, queue, b_->next[p] == n ? &turns.before : nullptr);
+  return {p_left, n_left};
+}
+
 bool EarClipper::is_ear(std::uint32_t v) const {
-  return grid_.scans_cells() ? test_ear<true>(v) : test_ear<false>(v);
+  DiagonalTurns turns;
+  return is_ear(v, turns);
+}
+
+bool EarClipper::is_ear(std::uint32_t v, DiagonalTurns& turns) const {
+  return grid_.scans_cells() ? test_ear<true>(v, turns) : test_ear<false>(v, turns);
 }
 
 template <bool scanned>
-bool EarClipper::test_ear(std::uint32_t v) const {
+bool EarClipper::test_ear(std::uint32_t v, DiagonalTurns& turns) const {
   const auto near = [this](const Point& a, const Point& t, const Point& c, const Box& box,
                            auto&& visit) {
     // Counts the hashed nodes in the triangle's box: the ear test's work.
@@ -124,7 +137,7 @@ bool EarClipper::test_ear(std::uint32_t v) const {
       return visit(e);
     });
   };
-  return detail::is_ear(*b_, AllLinks{}, v, near);
+  return detail::is_ear(*b_, AllLinks{}, v, near, turns);
 }
 
 double EarClipper::quality(std::uint32_t v) const {
@@ -168,22 +181,26 @@ void EarClipper::update_neighbour(std::uint32_t v) {
   ++stamp_[v];
 }
 
+void EarClipper::update_neighbour(std::uint32_t v, double turn) {
+  if (reflex_[v] && !pinch_[v] && turn >= 0) drop_reflex(v);
+  ++stamp_[v];
+}
+
 /// Queues v if it is convex: by shape for "top", by diagonal length for "fast". The ear test
 /// waits until v is popped: most queued nodes change (a neighbour is clipped, the stamp moves
 /// on) before their turn, and an ear's status changes only when its neighbours do, so testing
 /// at the pop clips the same ears in the same order with about half the tests.
-void EarClipper::offer(std::uint32_t v) {
-  const double turn = b_->turn(v);
+void EarClipper::offer(std::uint32_t v, double turn) {
   if (!(turn > 0)) return;
   queue_.push(ear_bucket(*b_, v, heuristic_, turn), {v, stamp_[v]}, v / EarQueue::block_nodes);
 }
 
 /// The best queued node that is still current and an ear.
-bool EarClipper::pop(std::uint32_t& v) {
+bool EarClipper::pop(std::uint32_t& v, DiagonalTurns& turns) {
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
     prefetch_upcoming(queue_, *b_, stamp_.data(), true);
-    if (alive_[top.node] && stamp_[top.node] == top.stamp && is_ear(top.node)) {
+    if (alive_[top.node] && stamp_[top.node] == top.stamp && is_ear(top.node, turns)) {
       v = top.node;
       return true;
     }
@@ -199,9 +216,10 @@ void EarClipper::clip_ears(std::uint32_t entry) {
     offer(v);
     v = b_->next[v];
   } while (v != entry);
+  DiagonalTurns turns;
   for (;;) {
     while (remaining_ > 3) {
-      if (!pop(v)) {
+      if (!pop(v, turns)) {
         if (!fall_back(anchor_)) break;
         last = touched_;
         for (std::uint32_t u : {b_->prev[last], last, b_->next[last]})
@@ -210,7 +228,7 @@ void EarClipper::clip_ears(std::uint32_t entry) {
       }
       const std::uint32_t p = b_->prev[v], n = b_->next[v];
       clip(v);
-      const std::uint32_t n_left = settle(n, true), p_left = settle(p, true);
+      const auto [p_left, n_left] = settle_clipped(p, n, turns, true);
       last = p_left != UINT32_MAX ? p_left : n_left != UINT32_MAX ? n_left : p;
       finish_strip();
     }
@@ -327,13 +345,14 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
         continue;
       }
       if (!alive_[v] || (!recheck && failed_[v] == stamp_[v] + 1)) continue;
-      if (!is_ear(v)) {
+      DiagonalTurns turns;
+      if (!is_ear(v, turns)) {
         failed_[v] = stamp_[v] + 1;
         continue;
       }
       const std::uint32_t p = b_->prev[v], n = b_->next[v];
       clip(v);
-      const std::uint32_t n_left = settle(n, false), p_left = settle(p, false);
+      const auto [p_left, n_left] = settle_clipped(p, n, turns, false);
       up_next = n_left;
       if (p_left != UINT32_MAX) walk_.push_back(p_left);
       recheck = false;

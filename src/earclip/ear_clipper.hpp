@@ -68,26 +68,39 @@ class EarClipper final : public CycleClipper {
   bool clip_prepared(std::uint32_t entry);
   void classify(std::uint32_t entry, SharedPositions shared);
   bool is_ear(std::uint32_t v) const;
+  /// is_ear, and when v is an ear the turns its neighbours will have once it is clipped.
+  bool is_ear(std::uint32_t v, DiagonalTurns& turns) const;
   /// is_ear with the grid's query `scanned` (ReflexGrid::scans_cells).
   template <bool scanned>
-  bool test_ear(std::uint32_t v) const;
+  bool test_ear(std::uint32_t v, DiagonalTurns& turns) const;
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
   void update_neighbour(std::uint32_t v);
+  /// update_neighbour for v whose corner turns by `turn` (orient2d) now.
+  void update_neighbour(std::uint32_t v, double turn);
   void remove(std::uint32_t v);
   void mark_pinches(SharedPositions shared);
   /// Every node's shared position, for the bit sets: given, none, or found here.
   const std::vector<std::uint8_t>* shared_marks(std::uint32_t entry, SharedPositions shared);
   void drop_reflex(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
-  std::uint32_t settle(std::uint32_t v, bool queue);
+  /// `turn`: v's turn when the caller knows it (the tested ear's, for its neighbours), or null.
+  std::uint32_t settle(std::uint32_t v, bool queue, const double* turn = nullptr);
+  /// Settles the neighbours p and n of an ear just clipped, with the turns its test gave them
+  /// (n's first; p's only while it is still n's neighbour, as settling n may dissolve spikes).
+  /// Returns what settle returned for each.
+  std::array<std::uint32_t, 2> settle_clipped(std::uint32_t p, std::uint32_t n,
+                                              const DiagonalTurns& turns, bool queue);
   /// A live node at or after v: removed nodes keep pointing at nodes live when they left.
   std::uint32_t live(std::uint32_t v) const {
     while (!alive_[v]) v = b_->next[v];
     return v;
   }
-  void offer(std::uint32_t v);
-  bool pop(std::uint32_t& v);
+  void offer(std::uint32_t v) { offer(v, b_->turn(v)); }
+  /// offer for v whose corner turns by `turn` now.
+  void offer(std::uint32_t v, double turn);
+  /// The best queued node that is still current and an ear; `turns` as is_ear gives them.
+  bool pop(std::uint32_t& v, DiagonalTurns& turns);
   bool fall_back(std::uint32_t near);
   bool split_along_diagonal(std::uint32_t near);
   void split_cycle(std::uint32_t a, std::uint32_t c, std::size_t first_part);

@@ -16,12 +16,12 @@ constexpr int foreign_budget = 48;
 
 }  // namespace
 
-bool ChainClipper::is_ear(std::uint32_t v) const {
-  return own_grid_.scans_cells() ? test_ear<true>(v) : test_ear<false>(v);
+bool ChainClipper::is_ear(std::uint32_t v, DiagonalTurns& turns) const {
+  return own_grid_.scans_cells() ? test_ear<true>(v, turns) : test_ear<false>(v, turns);
 }
 
 template <bool scanned>
-bool ChainClipper::test_ear(std::uint32_t v) const {
+bool ChainClipper::test_ear(std::uint32_t v, DiagonalTurns& turns) const {
   const auto near = [this](const Point& a, const Point& t, const Point& c, const Box& box,
                            auto&& visit) {
     int looked_at = 0;
@@ -31,7 +31,7 @@ bool ChainClipper::test_ear(std::uint32_t v) const {
           return visit(e);
         });
   };
-  return detail::is_ear(*s_->b, OwnLinks{s_, chain_}, v, near);
+  return detail::is_ear(*s_->b, OwnLinks{s_, chain_}, v, near, turns);
 }
 
 /// The grid the ear tests read: the chain's hashed nodes (taken out as they stop being reflex)
@@ -68,21 +68,25 @@ void ChainClipper::build_grid(std::size_t first, std::size_t last) {
 void ChainClipper::offer(std::uint32_t v) {
   const Boundary& b = *s_->b;
   if (!own(b.prev[v]) || !own(b.next[v])) return;
-  const double turn = b.turn(v);
-  if (!(turn > 0)) return;
+  offer(v, b.turn(v));
+}
+
+void ChainClipper::offer(std::uint32_t v, double turn) {
+  const Boundary& b = *s_->b;
+  if (!own(b.prev[v]) || !own(b.next[v]) || !(turn > 0)) return;
   queue_.push(ear_bucket(b, v, heuristic_, turn), {v, s_->stamp[v]},
               (v - first_node_) / EarQueue::block_nodes);
 }
 
 /// Whether popped v is an ear this chain may clip now.
-bool ChainClipper::clippable(std::uint32_t v) const {
+bool ChainClipper::clippable(std::uint32_t v, DiagonalTurns& turns) const {
   const Boundary& b = *s_->b;
   const std::uint32_t p = b.prev[v], n = b.next[v];
   if (!own(p) || !own(n)) return false;
   // Next to a spike that could not be dissolved (it reaches into another chain) the ear test's
   // argument does not hold; the sequential engine will dissolve it first.
   if (b.pos[b.prev[p]] == b.pos[v] || b.pos[b.next[n]] == b.pos[v]) return false;
-  return is_ear(v);
+  return is_ear(v, turns);
 }
 
 void ChainClipper::unhash(std::uint32_t v) {
@@ -93,6 +97,11 @@ void ChainClipper::unhash(std::uint32_t v) {
 
 void ChainClipper::update(std::uint32_t v) {
   if (s_->hashed[v] && !s_->pinch[v] && s_->b->turn(v) >= 0) unhash(v);
+  ++s_->stamp[v];
+}
+
+void ChainClipper::update(std::uint32_t v, double turn) {
+  if (s_->hashed[v] && !s_->pinch[v] && turn >= 0) unhash(v);
   ++s_->stamp[v];
 }
 
@@ -119,9 +128,13 @@ std::uint32_t ChainClipper::dissolve_spikes(std::uint32_t v) {
 }
 
 /// After a clip next to v: dissolve spikes, refresh the convexity and ear status around v.
-void ChainClipper::settle(std::uint32_t v) {
+void ChainClipper::settle(std::uint32_t v, const double* turn) {
   if (!s_->alive[v]) return;
   const std::uint32_t u = dissolve_spikes(v);
+  if (u == v && turn != nullptr) {
+    if (own(v)) update(v, *turn), offer(v, *turn);
+    return;
+  }
   const Boundary& b = *s_->b;
   const std::uint32_t around[3] = {b.prev[u], u, b.next[u]};
   for (std::uint32_t w : u == v ? std::span(around + 1, 1) : std::span(around)) {
@@ -154,12 +167,15 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
     // Links of nodes near other chains may be written by their tasks: no following them.
     prefetch_upcoming(queue_, b, s.stamp.data(), false);
     const std::uint32_t v = top.node;
-    if (!s.alive[v] || s.stamp[v] != top.stamp || !clippable(v)) continue;
+    DiagonalTurns turns;
+    if (!s.alive[v] || s.stamp[v] != top.stamp || !clippable(v, turns)) continue;
     const std::uint32_t p = b.prev[v], n = b.next[v];
     out.push_back({b.vertex[p], b.vertex[v], b.vertex[n]});
     remove(v);
-    settle(n);
-    settle(p);
+    // The ear test's turns at the diagonal's ends; p's only while n (settled first, which may
+    // dissolve spikes) is still its neighbour.
+    settle(n, &turns.after);
+    settle(p, b.next[p] == n ? &turns.before : nullptr);
   }
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "core/ear_queue.hpp"
+#include "core/ear_test.hpp"
 #include "shared_boundary.hpp"
 
 namespace pear::detail {
@@ -24,19 +25,25 @@ class ChainClipper {
     bool readable(std::uint32_t q) const { return s->owner[q] == chain; }
   };
   bool own(std::uint32_t v) const { return s_->owner[v] == chain_; }
-  bool is_ear(std::uint32_t v) const;
+  /// Whether v is an ear; if so, `turns` as detail::is_ear gives them.
+  bool is_ear(std::uint32_t v, DiagonalTurns& turns) const;
   /// is_ear with the grid's query `scanned` (ReflexGrid::scans_cells).
   template <bool scanned>
-  bool test_ear(std::uint32_t v) const;
+  bool test_ear(std::uint32_t v, DiagonalTurns& turns) const;
   void build_grid(std::size_t first, std::size_t last);
   void offer(std::uint32_t v);
-  bool clippable(std::uint32_t v) const;
+  /// offer for v whose corner turns by `turn` now.
+  void offer(std::uint32_t v, double turn);
+  bool clippable(std::uint32_t v, DiagonalTurns& turns) const;
   /// After v lost a neighbour: it may have stopped being strictly reflex.
   void update(std::uint32_t v);
+  /// update for v whose corner turns by `turn` now.
+  void update(std::uint32_t v, double turn);
   void unhash(std::uint32_t v);
   void remove(std::uint32_t v);
   std::uint32_t dissolve_spikes(std::uint32_t v);
-  void settle(std::uint32_t v);
+  /// `turn`: v's turn when the caller knows it (the clipped ear's test gave it), or null.
+  void settle(std::uint32_t v, const double* turn = nullptr);
 
   SharedBoundary* s_ = nullptr;
   std::uint32_t chain_ = 0;
