@@ -11,6 +11,7 @@
 #include "core/boundary.hpp"
 #include "core/cycle_clipper.hpp"
 #include "core/ear_queue.hpp"
+#include "core/ear_test.hpp"
 #include "core/pinches.hpp"
 #include "core/reflex_grid.hpp"
 #include "core/stage.hpp"
