@@ -65,12 +65,6 @@ void ChainClipper::build_grid(std::size_t first, std::size_t last) {
 
 /// Queues v if it may be clipped: convex, with neighbours of its own chain. The ear test waits
 /// until v is popped (see EarClipper::offer).
-void ChainClipper::offer(std::uint32_t v) {
-  const Boundary& b = *s_->b;
-  if (!own(b.prev[v]) || !own(b.next[v])) return;
-  offer(v, b.turn(v));
-}
-
 void ChainClipper::offer(std::uint32_t v, double turn) {
   const Boundary& b = *s_->b;
   if (!own(b.prev[v]) || !own(b.next[v]) || !(turn > 0)) return;

@@ -31,7 +31,7 @@ class ChainClipper {
   template <bool scanned>
   bool test_ear(std::uint32_t v, DiagonalTurns& turns) const;
   void build_grid(std::size_t first, std::size_t last);
-  void offer(std::uint32_t v);
+  void offer(std::uint32_t v) { offer(v, s_->b->turn(v)); }
   /// offer for v whose corner turns by `turn` now.
   void offer(std::uint32_t v, double turn);
   bool clippable(std::uint32_t v, DiagonalTurns& turns) const;
