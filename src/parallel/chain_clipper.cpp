@@ -42,16 +42,14 @@ bool ChainClipper::test_ear(std::uint32_t v, DiagonalTurns& turns) const {
 void ChainClipper::build_grid(std::size_t first, std::size_t last) {
   const SharedBoundary& s = *s_;
   const Boundary& b = *s.b;
-  const std::size_t count = s.order.size();
   Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
   scratch_.clear();
-  for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count) {
-    const std::uint32_t v = s.order[i];
+  s.for_each_between(first, last, [&](std::uint32_t v) {
     const Point& p = b.pos[v];
     lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
     hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
     if (s.hashed[v]) scratch_.push_back(v);
-  }
+  });
   const auto take = [&](const Point& p, std::uint32_t v) {
     if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) scratch_.push_back(v);
   };
@@ -144,18 +142,18 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
   chain_ = chain;
   heuristic_ = heuristic;
   Boundary& b = *s.b;
-  const std::size_t count = s.order.size();
   // As the sequential clipper's queue does on large boundaries: key level, then block of
   // consecutive nodes (over the chain's span of node numbers), then key.
   std::uint32_t lowest = UINT32_MAX, highest = 0;
-  for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)
-    lowest = std::min(lowest, s.order[i]), highest = std::max(highest, s.order[i]);
+  s.for_each_between(first, last, [&](std::uint32_t v) {
+    lowest = std::min(lowest, v), highest = std::max(highest, v);
+  });
   first_node_ = lowest == UINT32_MAX ? 0 : lowest;
   const std::uint32_t span = lowest == UINT32_MAX ? 0 : highest - lowest + 1;
   constexpr std::uint32_t block = EarQueue::block_nodes;
   queue_.clear(span >= 2 * block ? (span + block - 1) / block : 1);
   build_grid(first, last);
-  for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count) offer(s.order[i]);
+  s.for_each_between(first, last, [&](std::uint32_t v) { offer(v); });
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
     // Links of nodes near other chains may be written by their tasks: no following them.

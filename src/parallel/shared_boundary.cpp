@@ -122,8 +122,8 @@ std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count
   ctx.run_tasks("place landmarks", chains, [&](std::size_t chain) {
     const std::size_t first = marks[chain], last = marks[(chain + 1) % chains];
     owner[order[first]] = landmark;
-    for (std::size_t i = (first + 1) % count; i != last; i = (i + 1) % count)
-      owner[order[i]] = static_cast<std::uint32_t>(chain);
+    for_each_between(first, last,
+                     [&](std::uint32_t u) { owner[u] = static_cast<std::uint32_t>(chain); });
   });
   landmarks.clear();
   for (std::size_t mark : marks)
@@ -131,9 +131,9 @@ std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count
   start_grids.resize(chains);
   ctx.run_tasks("build start grids", chains, [&](std::size_t chain) {
     std::vector<std::uint32_t> nodes;
-    for (std::size_t i = (marks[chain] + 1) % count; i != marks[(chain + 1) % chains];
-         i = (i + 1) % count)
-      if (hashed[order[i]]) nodes.push_back(order[i]);
+    for_each_between(marks[chain], marks[(chain + 1) % chains], [&](std::uint32_t u) {
+      if (hashed[u]) nodes.push_back(u);
+    });
     start_grids[chain].build(*b, nodes, removable);
   });
   return marks;

@@ -68,6 +68,18 @@ struct SharedBoundary {
   }
   std::size_t chains = 0;
 
+  /// Calls f(node) for the nodes of `order` strictly between positions `first` and `last`,
+  /// around the cycle: two plain loops, no division a node.
+  template <class F>
+  void for_each_between(std::size_t first, std::size_t last, F&& f) const {
+    std::size_t i = first + 1;
+    if (last < i) {
+      for (; i < order.size(); ++i) f(order[i]);
+      i = 0;
+    }
+    for (; i < last; ++i) f(order[i]);
+  }
+
  private:
   /// Fills the arrays and `order` with the cycle through `entry`, alive set on it.
   void walk_cycle(std::uint32_t entry, const RunContext& ctx);
