@@ -56,7 +56,7 @@ void ChainClipper::build_grid(std::size_t first, std::size_t last) {
   for (std::uint32_t mark : s.landmarks) take(b.pos[mark], mark);
   for (std::size_t other = 0; other < s.chains; ++other)
     if (other != chain_)
-      s.start_grids[other].for_each_in_box(
+      s.start_lists[other].for_each_in_box(
           lo, hi, [&](const ReflexGrid::Entry& e) { scratch_.push_back(e.node); });
   own_grid_.build(b, scratch_);
 }

@@ -32,7 +32,7 @@ class MarkAndCut {
         triangles_(scratch.parts) {
     if (ears_.size() < chunks) ears_.resize(chunks);
     if (triangles_.size() < chunks) triangles_.resize(chunks);
-    marks_ = s_.place_landmarks(chunks, 0, ctx, true);
+    marks_ = s_.place_landmarks(chunks, 0, ctx, SharedBoundary::StartIndex::grids);
   }
 
   /// One round; returns the number of ears clipped.

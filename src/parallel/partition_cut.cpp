@@ -70,7 +70,8 @@ std::uint32_t partition_and_cut(Boundary& b, std::uint32_t entry, EarHeuristic h
     if (chains < 2) break;
     const auto offset =
         static_cast<std::size_t>(landmark_shift[round] * static_cast<double>(nodes / chains));
-    const std::vector<std::size_t> marks = s.place_landmarks(chains, offset, ctx);
+    const std::vector<std::size_t> marks =
+        s.place_landmarks(chains, offset, ctx, SharedBoundary::StartIndex::lists);
     ctx.run_tasks("clip chains", chains, [&](std::size_t c) {
       parts[c].clear();
       clippers[c].run(s, static_cast<std::uint32_t>(c), marks[c], marks[(c + 1) % chains],

@@ -1,6 +1,7 @@
 #include "shared_boundary.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/link_runs.hpp"
 #include "core/pinches.hpp"
@@ -113,30 +114,49 @@ std::uint32_t SharedBoundary::refresh_order(const RunContext& ctx) {
 
 std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count,
                                                          std::size_t offset, const RunContext& ctx,
-                                                         bool removable) {
+                                                         StartIndex index) {
   chains = chain_count;
   std::vector<std::size_t> marks(chains);
   const std::size_t count = order.size();
   for (std::size_t i = 0; i < chains; ++i)
     marks[i] = (offset + part_begin(count, chains, i)) % count;
-  ctx.run_tasks("place landmarks", chains, [&](std::size_t chain) {
-    const std::size_t first = marks[chain], last = marks[(chain + 1) % chains];
-    owner[order[first]] = landmark;
-    for_each_between(first, last,
-                     [&](std::uint32_t u) { owner[u] = static_cast<std::uint32_t>(chain); });
-  });
   landmarks.clear();
   for (std::size_t mark : marks)
     if (hashed[order[mark]]) landmarks.push_back(order[mark]);
-  start_grids.resize(chains);
-  ctx.run_tasks("build start grids", chains, [&](std::size_t chain) {
+  if (index == StartIndex::grids)
+    start_grids.resize(chains);
+  else
+    start_lists.resize(chains);
+  ctx.run_tasks("place landmarks", chains, [&](std::size_t chain) {
+    const std::size_t first = marks[chain], last = marks[(chain + 1) % chains];
+    owner[order[first]] = landmark;
     std::vector<std::uint32_t> nodes;
-    for_each_between(marks[chain], marks[(chain + 1) % chains], [&](std::uint32_t u) {
+    for_each_between(first, last, [&](std::uint32_t u) {
+      owner[u] = static_cast<std::uint32_t>(chain);
       if (hashed[u]) nodes.push_back(u);
     });
-    start_grids[chain].build(*b, nodes, removable);
+    if (index == StartIndex::grids)
+      start_grids[chain].build(*b, nodes);
+    else
+      start_lists[chain].build(*b, nodes);
   });
   return marks;
+}
+
+void StartList::build(const Boundary& b, const std::vector<std::uint32_t>& nodes) {
+  entries.resize(nodes.size());
+  blocks.resize((nodes.size() + block - 1) / block);
+  for (std::size_t k = 0; k < blocks.size(); ++k) {
+    Box box{INFINITY, INFINITY, -INFINITY, -INFINITY};
+    const std::size_t last = std::min(nodes.size(), (k + 1) * block);
+    for (std::size_t i = k * block; i < last; ++i) {
+      const Point& p = b.pos[nodes[i]];
+      entries[i] = {p, nodes[i]};
+      box = {std::min(box.x0, p.x), std::min(box.y0, p.y), std::max(box.x1, p.x),
+             std::max(box.y1, p.y)};
+    }
+    blocks[k] = box;
+  }
 }
 
 }  // namespace pear::detail
