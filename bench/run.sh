@@ -15,7 +15,8 @@
 #        thread, rendered as docs/scaling.md (the one scaling table the docs quote): the coasts
 #        (Eurasia, 1.5M vertices, only with --eurasia: about 2 minutes more; Antarctica is not
 #        simple), the synthetic files (Koch-8, star, comb, spiral, holes grid) and the random
-#        families at 100k; the fastest of 5 runs each (PEAR_BENCH_PROFILE_RUNS). About 15
+#        families at 100k; 5 rounds (PEAR_BENCH_PROFILE_RUNS), the bases again before every
+#        fourth variant. About 15
 #        minutes on 2 cores, 25 with Eurasia.
 # --commit REV: measure that commit, exported with `git archive` into DIR/snapshot (a shared
 #        working tree with other people's unfinished edits need not compile); default: the

@@ -36,9 +36,12 @@ def find(run, variant, k):
 
 
 def bound(run, variant, k):
-    """The sequential run's time over the projected time on k threads with k partitions."""
+    """The sequential run's time over the projected time on k threads with k partitions, each
+    the least over its runs (older files: the projection of the fastest run)."""
     v = find(run, variant, k)
-    return base_seconds(run, variant) / v["projected"][str(k)] if v else None
+    if not v:
+        return None
+    return base_seconds(run, variant) / v.get("least_projected", v["projected"][str(k)])
 
 
 def cdt_stage_bound(v, k):
@@ -108,16 +111,22 @@ Machine: {machine.get('cpus', '?')} CPUs ({machine.get('cpu', '?')}), {machine.g
 how far each variant could scale; the README and docs/parallel.md quote it.
 
 How it is measured: every run on **one thread** with `Options::partitions = k` (the output
-depends on k, never on the threads), `Options::profile` timing every task of every phase, the
-fastest of a few runs kept (`PEAR_BENCH_PROFILE_RUNS`, the runs of all configurations of an
-input interleaved; on a shared machine a disturbed run still moves a cell by tens of per cent,
-at worst 2x, and the ranges below say more than any one cell). *Work* is the sum of all tasks, *span* the sum over
-phases of the longest task (both with the time outside the recorded phases counted as one
-serial task).
-The **bound** is the sequential default's time at one partition (the third column; for the CDT
-rows, the sequential CDT's) over `RunProfile::projected(k)`, Brent's bound per phase,
-max(work / k, longest task), summed: the speedup k threads would give over one if scheduling were
-greedy and memory free. It is a projection, not a measurement: the times measured at 1 to 16
+depends on k, never on the threads), `Options::profile` timing every task of every phase, in a
+few rounds (`PEAR_BENCH_PROFILE_RUNS`) over all configurations of an input, the bases (the
+sequential default and the sequential CDT at one partition) run again before every fourth
+variant. *Work* is the sum of all tasks, *span* the sum over phases of the longest task (both
+with the time outside the recorded phases counted as one serial task), of the fastest run.
+The **bound** is the base's fastest run (the third column; for the CDT rows, the sequential
+CDT's) over the least `RunProfile::projected(k)` of the variant's runs, Brent's bound per
+phase, max(work / k, longest task), summed: the speedup k threads would give over one if
+scheduling were greedy and memory free. A base run once a round could fall in slow spells each
+time (the shared machine runs every time up to 2x slower for minutes: a coast's base once 40%
+slower than in the table before, every bound of the coast with it); the median ratio of runs
+paired in time leaned the other way in a trial (the random families' bounds at 4 1.3-1.5x
+those of a quiet hour: time lost in a spell counts in full in a sequential run, in about a k-th
+part in a projection). A cell still moves by 10-20% between tables; the ranges below say more
+than any one.
+It is a projection, not a measurement: the times measured at 1 to 16
 threads on a 16-core machine, with each phase's elapsed time beside this bound, are in
 [benchmarks.md](benchmarks.md#measured-on-16-cores-fig-9s-triangles) (`bench/threads.sh`). A variant whose work is below the sequential engine's (mark-and-cut: no
 queue) can exceed k. The *automatic* rows are the default algorithm at k partitions
