@@ -39,17 +39,23 @@ bool ChainClipper::test_ear(std::uint32_t v, DiagonalTurns& turns) const {
 /// start within the chain's bounding box (an ear's corners are the chain's own, so nothing
 /// outside it can lie in an ear). One grid to ask instead of one per chain: Australia's ear
 /// tests at 16 chains took 1,612 instructions each, with one grid 952.
-void ChainClipper::build_grid(std::size_t first, std::size_t last) {
+/// The same walk over the chain's nodes finds the range of their numbers, which the queue's
+/// blocks span.
+std::uint32_t ChainClipper::build_grid(std::size_t first, std::size_t last) {
   const SharedBoundary& s = *s_;
   const Boundary& b = *s.b;
   Point lo{INFINITY, INFINITY}, hi{-INFINITY, -INFINITY};
+  std::uint32_t lowest = UINT32_MAX, highest = 0;
   scratch_.clear();
-  s.for_each_between(first, last, [&](std::uint32_t v) {
-    const Point& p = b.pos[v];
-    lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
-    hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    if (s.hashed[v]) scratch_.push_back(v);
-  });
+  for (const auto run : s.between(first, last))
+    for (const std::uint32_t v : run) {
+      const Point& p = b.pos[v];
+      lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)};
+      hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+      lowest = std::min(lowest, v), highest = std::max(highest, v);
+      if (s.hashed[v]) scratch_.push_back(v);
+    }
+  first_node_ = lowest == UINT32_MAX ? 0 : lowest;
   const auto take = [&](const Point& p, std::uint32_t v) {
     if (p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) scratch_.push_back(v);
   };
@@ -59,6 +65,7 @@ void ChainClipper::build_grid(std::size_t first, std::size_t last) {
       s.start_lists[other].for_each_in_box(
           lo, hi, [&](const ReflexGrid::Entry& e) { scratch_.push_back(e.node); });
   own_grid_.build(b, scratch_);
+  return lowest == UINT32_MAX ? 0 : highest - lowest + 1;
 }
 
 /// Queues v if it may be clipped: convex, with neighbours of its own chain. The ear test waits
@@ -144,16 +151,11 @@ void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first
   Boundary& b = *s.b;
   // As the sequential clipper's queue does on large boundaries: key level, then block of
   // consecutive nodes (over the chain's span of node numbers), then key.
-  std::uint32_t lowest = UINT32_MAX, highest = 0;
-  s.for_each_between(first, last, [&](std::uint32_t v) {
-    lowest = std::min(lowest, v), highest = std::max(highest, v);
-  });
-  first_node_ = lowest == UINT32_MAX ? 0 : lowest;
-  const std::uint32_t span = lowest == UINT32_MAX ? 0 : highest - lowest + 1;
+  const std::uint32_t span = build_grid(first, last);
   constexpr std::uint32_t block = EarQueue::block_nodes;
   queue_.clear(span >= 2 * block ? (span + block - 1) / block : 1);
-  build_grid(first, last);
-  s.for_each_between(first, last, [&](std::uint32_t v) { offer(v); });
+  for (const auto run : s.between(first, last))
+    for (const std::uint32_t v : run) offer(v);
   EarQueue::Candidate top;
   while (queue_.pop(top)) {
     // Links of nodes near other chains may be written by their tasks: no following them.

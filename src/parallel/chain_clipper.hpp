@@ -30,7 +30,8 @@ class ChainClipper {
   /// is_ear with the grid's query `scanned` (ReflexGrid::scans_cells).
   template <bool scanned>
   bool test_ear(std::uint32_t v, DiagonalTurns& turns) const;
-  void build_grid(std::size_t first, std::size_t last);
+  /// Returns the span of the chain's node numbers from first_node_, which it sets.
+  std::uint32_t build_grid(std::size_t first, std::size_t last);
   void offer(std::uint32_t v) { offer(v, s_->b->turn(v)); }
   /// offer for v whose corner turns by `turn` now.
   void offer(std::uint32_t v, double turn);

@@ -125,16 +125,17 @@ std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count
     if (hashed[order[mark]]) landmarks.push_back(order[mark]);
   if (index == StartIndex::grids)
     start_grids.resize(chains);
-  else
-    start_lists.resize(chains);
+  else if (start_lists.size() < chains)  // a fresh vector where resize's code cost the .wasm
+    start_lists = std::vector<StartList>(chains);
   ctx.run_tasks("place landmarks", chains, [&](std::size_t chain) {
     const std::size_t first = marks[chain], last = marks[(chain + 1) % chains];
     owner[order[first]] = landmark;
     std::vector<std::uint32_t> nodes;
-    for_each_between(first, last, [&](std::uint32_t u) {
-      owner[u] = static_cast<std::uint32_t>(chain);
-      if (hashed[u]) nodes.push_back(u);
-    });
+    for (const auto run : between(first, last))
+      for (const std::uint32_t u : run) {
+        owner[u] = static_cast<std::uint32_t>(chain);
+        if (hashed[u]) nodes.push_back(u);
+      }
     if (index == StartIndex::grids)
       start_grids[chain].build(*b, nodes);
     else
@@ -145,17 +146,15 @@ std::vector<std::size_t> SharedBoundary::place_landmarks(std::size_t chain_count
 
 void StartList::build(const Boundary& b, const std::vector<std::uint32_t>& nodes) {
   entries.resize(nodes.size());
-  blocks.resize((nodes.size() + block - 1) / block);
-  for (std::size_t k = 0; k < blocks.size(); ++k) {
-    Box box{INFINITY, INFINITY, -INFINITY, -INFINITY};
-    const std::size_t last = std::min(nodes.size(), (k + 1) * block);
-    for (std::size_t i = k * block; i < last; ++i) {
-      const Point& p = b.pos[nodes[i]];
-      entries[i] = {p, nodes[i]};
-      box = {std::min(box.x0, p.x), std::min(box.y0, p.y), std::max(box.x1, p.x),
-             std::max(box.y1, p.y)};
-    }
-    blocks[k] = box;
+  blocks.resize(2 * ((nodes.size() + block - 1) / block));
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    const Point& p = b.pos[nodes[i]];
+    entries[i] = {p, nodes[i]};
+    Point& low = blocks[2 * (i / block)];
+    Point& high = blocks[2 * (i / block) + 1];
+    if (i % block == 0) low = high = p;
+    low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+    high = {std::max(high.x, p.x), std::max(high.y, p.y)};
   }
 }
 

@@ -8,7 +8,9 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "core/boundary.hpp"
@@ -25,16 +27,16 @@ namespace pear::detail {
 struct StartList {
   static constexpr std::size_t block = 32;
   std::vector<ReflexGrid::Entry> entries;
-  std::vector<Box> blocks;
+  std::vector<Point> blocks;  ///< per block its box's low corner, then its high one
 
   /// Makes the entries and blocks of `nodes`.
   void build(const Boundary& b, const std::vector<std::uint32_t>& nodes);
   /// Calls visit(entry) for the entries within [lo, hi], in list order.
   template <class Visit>
   void for_each_in_box(const Point& lo, const Point& hi, Visit&& visit) const {
-    for (std::size_t k = 0; k < blocks.size(); ++k) {
-      const Box& box = blocks[k];
-      if (box.x1 < lo.x || box.x0 > hi.x || box.y1 < lo.y || box.y0 > hi.y) continue;
+    for (std::size_t k = 0; 2 * k < blocks.size(); ++k) {
+      const Point &low = blocks[2 * k], &high = blocks[2 * k + 1];
+      if (high.x < lo.x || low.x > hi.x || high.y < lo.y || low.y > hi.y) continue;
       const std::size_t last = std::min(entries.size(), (k + 1) * block);
       for (std::size_t i = k * block; i < last; ++i) {
         const Point& p = entries[i].pos;
@@ -100,16 +102,12 @@ struct SharedBoundary {
   }
   std::size_t chains = 0;
 
-  /// Calls f(node) for the nodes of `order` strictly between positions `first` and `last`,
-  /// around the cycle: two plain loops, no division a node.
-  template <class F>
-  void for_each_between(std::size_t first, std::size_t last, F&& f) const {
-    std::size_t i = first + 1;
-    if (last < i) {
-      for (; i < order.size(); ++i) f(order[i]);
-      i = 0;
-    }
-    for (; i < last; ++i) f(order[i]);
+  /// The nodes of `order` strictly between positions `first` and `last`, around the cycle: two
+  /// runs of it, the second empty unless the range wraps (no division a node to step through).
+  std::array<std::span<const std::uint32_t>, 2> between(std::size_t first, std::size_t last) const {
+    const std::span<const std::uint32_t> all(order.data(), order.size());
+    if (last > first) return {all.subspan(first + 1, last - first - 1), {}};
+    return {all.subspan(first + 1), all.first(last)};
   }
 
  private:
