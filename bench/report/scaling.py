@@ -124,8 +124,9 @@ time (the shared machine runs every time up to 2x slower for minutes: a coast's 
 slower than in the table before, every bound of the coast with it); the median ratio of runs
 paired in time leaned the other way in a trial (the random families' bounds at 4 1.3-1.5x
 those of a quiet hour: time lost in a spell counts in full in a sequential run, in about a k-th
-part in a projection). A cell still moves by 10-20% between tables; the ranges below say more
-than any one.
+part in a projection). A cell still moves by a tenth to a third between tables (Baffin's
+`automatic` at 4 partitions 2.91-4.46x in three tables within 40 minutes on 2026-11-29); the
+ranges below say more than any one.
 It is a projection, not a measurement: the times measured at 1 to 16
 threads on a 16-core machine, with each phase's elapsed time beside this bound, are in
 [benchmarks.md](benchmarks.md#measured-on-16-cores-fig-9s-triangles) (`bench/threads.sh`). A variant whose work is below the sequential engine's (mark-and-cut: no
