@@ -100,8 +100,9 @@ std::uint32_t EarClipper::settle(std::uint32_t v, bool queue, const double* turn
   const std::uint32_t u = dissolve_spikes(v);
   if (u != v) {
     for (std::uint32_t w : {b_->prev[u], u, b_->next[u]}) {
-      update_neighbour(w);
-      if (queue) offer(w);
+      const double now = b_->turn(w);
+      update_neighbour(w, now);
+      if (queue) offer(w, now);
     }
     return u;
   }
@@ -176,11 +177,6 @@ bool EarClipper::finish_strip() {
 }
 
 /// After a clip: v's angle shrank, so it may have turned convex; its ear status may change.
-void EarClipper::update_neighbour(std::uint32_t v) {
-  if (reflex_[v] && !pinch_[v] && b_->turn(v) >= 0) drop_reflex(v);
-  ++stamp_[v];
-}
-
 void EarClipper::update_neighbour(std::uint32_t v, double turn) {
   if (reflex_[v] && !pinch_[v] && turn >= 0) drop_reflex(v);
   ++stamp_[v];
@@ -222,8 +218,10 @@ void EarClipper::clip_ears(std::uint32_t entry) {
       if (!pop(v, turns)) {
         if (!fall_back(anchor_)) break;
         last = touched_;
-        for (std::uint32_t u : {b_->prev[last], last, b_->next[last]})
-          update_neighbour(u), offer(u);
+        for (std::uint32_t u : {b_->prev[last], last, b_->next[last]}) {
+          const double now = b_->turn(u);
+          update_neighbour(u, now), offer(u, now);
+        }
         continue;
       }
       const std::uint32_t p = b_->prev[v], n = b_->next[v];
@@ -341,7 +339,7 @@ bool EarClipper::walk_ears(std::uint32_t& entry) {
         recheck = false;
         const std::uint32_t t = touched_;
         for (std::uint32_t u : {b_->prev[t], t, b_->next[t]})
-          update_neighbour(u), walk_.push_back(u);
+          update_neighbour(u, b_->turn(u)), walk_.push_back(u);
         continue;
       }
       if (!alive_[v] || (!recheck && failed_[v] == stamp_[v] + 1)) continue;

@@ -76,8 +76,8 @@ class EarClipper final : public CycleClipper {
   bool test_ear(std::uint32_t v, DiagonalTurns& turns) const;
   double quality(std::uint32_t v) const;
   void clip(std::uint32_t v);
-  void update_neighbour(std::uint32_t v);
-  /// update_neighbour for v whose corner turns by `turn` (orient2d) now.
+  /// After a change next to v, whose corner turns by `turn` (orient2d) now: v leaves the grid
+  /// if it stopped being reflex, and its queued entries go stale.
   void update_neighbour(std::uint32_t v, double turn);
   void remove(std::uint32_t v);
   void mark_pinches(SharedPositions shared);

@@ -1,7 +1,5 @@
 #include "chain_clipper.hpp"
 
-#include <span>
-
 #include "core/ear_test.hpp"
 
 namespace pear::detail {
@@ -94,11 +92,6 @@ void ChainClipper::unhash(std::uint32_t v) {
   own_grid_.remove(v, s_->b->pos[v]);
 }
 
-void ChainClipper::update(std::uint32_t v) {
-  if (s_->hashed[v] && !s_->pinch[v] && s_->b->turn(v) >= 0) unhash(v);
-  ++s_->stamp[v];
-}
-
 void ChainClipper::update(std::uint32_t v, double turn) {
   if (s_->hashed[v] && !s_->pinch[v] && turn >= 0) unhash(v);
   ++s_->stamp[v];
@@ -130,17 +123,15 @@ std::uint32_t ChainClipper::dissolve_spikes(std::uint32_t v) {
 void ChainClipper::settle(std::uint32_t v, const double* turn) {
   if (!s_->alive[v]) return;
   const std::uint32_t u = dissolve_spikes(v);
-  if (u == v && turn != nullptr) {
-    if (own(v)) update(v, *turn), offer(v, *turn);
-    return;
-  }
   const Boundary& b = *s_->b;
-  const std::uint32_t around[3] = {b.prev[u], u, b.next[u]};
-  for (std::uint32_t w : u == v ? std::span(around + 1, 1) : std::span(around)) {
-    if (!own(w)) continue;
-    update(w);
-    offer(w);
-  }
+  // Another chain's node: its links are that chain's to write, not to be read here.
+  const auto refresh = [&](std::uint32_t w, const double* known) {
+    if (!own(w)) return;
+    const double now = known != nullptr ? *known : b.turn(w);
+    update(w, now), offer(w, now);
+  };
+  if (u == v) return refresh(v, turn);
+  for (std::uint32_t w : {b.prev[u], u, b.next[u]}) refresh(w, nullptr);
 }
 
 void ChainClipper::run(SharedBoundary& s, std::uint32_t chain, std::size_t first, std::size_t last,

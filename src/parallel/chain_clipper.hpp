@@ -36,9 +36,8 @@ class ChainClipper {
   /// offer for v whose corner turns by `turn` now.
   void offer(std::uint32_t v, double turn);
   bool clippable(std::uint32_t v, DiagonalTurns& turns) const;
-  /// After v lost a neighbour: it may have stopped being strictly reflex.
-  void update(std::uint32_t v);
-  /// update for v whose corner turns by `turn` now.
+  /// After v lost a neighbour, its corner turning by `turn` now: it may have stopped being
+  /// strictly reflex.
   void update(std::uint32_t v, double turn);
   void unhash(std::uint32_t v);
   void remove(std::uint32_t v);

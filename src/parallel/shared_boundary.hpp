@@ -79,26 +79,19 @@ struct SharedBoundary {
   std::vector<std::size_t> place_landmarks(std::size_t chains, std::size_t offset,
                                            const RunContext& ctx, StartIndex index);
 
-  /// Calls visit(entry) for the hashed nodes within `box` (the bounding box of triangle (a, b,
-  /// c)) that other chains than `chain` held at the phase start, and for the landmarks within
+  /// Calls visit(entry) for the nodes every chain held hashed at the phase start (its start
+  /// grid) within `box`, the bounding box of triangle (a, b, c), and for the landmarks within
   /// it, until visit returns true; returns whether it did.
   template <class Visit>
-  bool any_foreign_near(const Point& a, const Point& b, const Point& c, const Box& box,
-                        std::size_t chain, Visit&& visit) const {
+  bool any_hashed_near(const Point& a, const Point& b, const Point& c, const Box& box,
+                       Visit&& visit) const {
     for (std::uint32_t mark : landmarks) {
       const Point& at = this->b->pos[mark];
       if (box.contains(at.x, at.y) && visit(ReflexGrid::Entry{at, mark})) return true;
     }
-    for (std::size_t other = 0; other < chains; ++other)
-      if (other != chain && start_grids[other].any_in_box_near_triangle(a, b, c, box, visit))
-        return true;
+    for (std::size_t chain = 0; chain < chains; ++chain)
+      if (start_grids[chain].any_in_box_near_triangle(a, b, c, box, visit)) return true;
     return false;
-  }
-  /// The same for the hashed nodes of every chain.
-  template <class Visit>
-  bool any_hashed_near(const Point& a, const Point& b, const Point& c, const Box& box,
-                       Visit&& visit) const {
-    return any_foreign_near(a, b, c, box, chains, visit);
   }
   std::size_t chains = 0;
 
